@@ -1,0 +1,58 @@
+#include "field_models/distance_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "field_models/field_distance.h"
+
+namespace houghloc {
+
+DistanceGrid::DistanceGrid(const FieldModel& field, const DistanceGridConfig& config)
+    : config_(config) {
+  if (!(config.resolution_m > 0.0)) throw std::invalid_argument("resolution_m must be > 0");
+  const double hx = field.outerHalfLength() + config.margin_m;
+  const double hy = field.outerHalfWidth() + config.margin_m;
+  origin_ = Eigen::Vector2d(-hx, -hy);
+  cols_ = static_cast<int>(std::ceil(2.0 * hx / config.resolution_m)) + 1;
+  rows_ = static_cast<int>(std::ceil(2.0 * hy / config.resolution_m)) + 1;
+  values_.resize(static_cast<size_t>(cols_) * rows_);
+  for (int r = 0; r < rows_; ++r) {
+    for (int c = 0; c < cols_; ++c) {
+      const Eigen::Vector2d p = origin_ + config.resolution_m * Eigen::Vector2d(c, r);
+      const double d = nearestFeature(field, p).distance_m;
+      values_[static_cast<size_t>(r) * cols_ + c] =
+          static_cast<float>(std::min(d, config.max_distance_m));
+    }
+  }
+}
+
+double DistanceGrid::distance(const Eigen::Vector2d& p_field) const {
+  return distance(p_field, nullptr);
+}
+
+double DistanceGrid::distance(const Eigen::Vector2d& p_field, Eigen::Vector2d* gradient) const {
+  if (values_.empty() || !p_field.allFinite()) {
+    if (gradient) gradient->setZero();
+    return config_.max_distance_m;
+  }
+  const Eigen::Vector2d g = (p_field - origin_) / config_.resolution_m;
+  // Clamp into the grid; the part outside adds to the distance (a lower bound of the truth).
+  const double gx = std::clamp(g.x(), 0.0, cols_ - 1.0);
+  const double gy = std::clamp(g.y(), 0.0, rows_ - 1.0);
+  const double outside = config_.resolution_m * std::hypot(g.x() - gx, g.y() - gy);
+  const int c0 = std::min(static_cast<int>(gx), cols_ - 2);
+  const int r0 = std::min(static_cast<int>(gy), rows_ - 2);
+  const double fx = gx - c0, fy = gy - r0;
+  const double v00 = node(c0, r0), v10 = node(c0 + 1, r0);
+  const double v01 = node(c0, r0 + 1), v11 = node(c0 + 1, r0 + 1);
+  const double top = v00 + fx * (v10 - v00), bottom = v01 + fx * (v11 - v01);
+  if (gradient) {
+    const double dx = (1.0 - fy) * (v10 - v00) + fy * (v11 - v01);
+    const double dy = bottom - top;
+    *gradient = Eigen::Vector2d(dx, dy) / config_.resolution_m;
+  }
+  return top + fy * (bottom - top) + outside;
+}
+
+}  // namespace houghloc

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+namespace houghloc {
+
+/// One field-line point seen by a camera, projected onto the ground plane (DESIGN §2, §3).
+struct GroundPoint {
+  Eigen::Vector2d p_robot = Eigen::Vector2d::Zero();  ///< m, robot frame
+  double weight = 1.0;                                ///< relative confidence, > 0
+  Eigen::Vector2f pixel = Eigen::Vector2f::Zero();    ///< source pixel (u, v), distorted image
+  int camera_id = 0;
+};
+
+/// A closed polygon on the ground in the robot frame (m), vertices in order.
+using GroundPolygon = std::vector<Eigen::Vector2d>;
+
+/// Everything one frame's vision says about the ground: the line points, and the part of the
+/// ground the cameras actually saw (field boundary and image border projected to the ground),
+/// which lets localization use negative evidence (lines expected there but not seen).
+struct GroundPoints {
+  std::int64_t t_us = 0;
+  std::vector<GroundPoint> points;
+  std::vector<GroundPolygon> visible_regions;  ///< one per camera; empty when unknown
+
+  std::size_t size() const { return points.size(); }
+  bool empty() const { return points.empty(); }
+};
+
+}  // namespace houghloc

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages houghloc needs (only those missing; quiet otherwise), then
+# configures and builds the Release tree in build/. Idempotent; run as root on a fresh machine.
+#   tools/setup.sh [extra cmake -D options]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PACKAGES=(
+  build-essential cmake pkg-config
+  libeigen3-dev libopencv-dev nlohmann-json3-dev libcli11-dev
+  liblcm-dev liblcm-bin libglib2.0-dev
+  googletest libgtest-dev libbenchmark-dev
+  iproute2 util-linux
+)
+
+missing=()
+for pkg in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$pkg")
+  fi
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}" >&2
+  SUDO=""
+  if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+BUILD_DIR=${HOUGHLOC_BUILD_DIR:-build}
+JOBS=${HOUGHLOC_JOBS:-$(nproc)}
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake --build "$BUILD_DIR" -j "$JOBS" 2>&1 | grep -E "error|warning|Error" || true
+# grep hides the progress lines; the build's own status decides.
+cmake --build "$BUILD_DIR" -j "$JOBS" >/dev/null
+echo "setup: built $BUILD_DIR/" >&2
