@@ -31,7 +31,10 @@ fi
 BUILD_DIR=${HOUGHLOC_BUILD_DIR:-build}
 JOBS=${HOUGHLOC_JOBS:-$(nproc)}
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build "$BUILD_DIR" -j "$JOBS" 2>&1 | grep -E "error|warning|Error" || true
-# grep hides the progress lines; the build's own status decides.
-cmake --build "$BUILD_DIR" -j "$JOBS" >/dev/null
+LOG="$BUILD_DIR/build.log"
+if ! cmake --build "$BUILD_DIR" -j "$JOBS" >"$LOG" 2>&1; then
+  grep -E -B2 -A8 "error|Error" "$LOG" | head -n 200 >&2
+  echo "setup: build failed, full log in $LOG" >&2
+  exit 1
+fi
 echo "setup: built $BUILD_DIR/" >&2
