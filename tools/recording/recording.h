@@ -24,9 +24,9 @@ class RecordingError : public std::runtime_error {
 struct FrameRecord {
   std::string image;  ///< path relative to the folder
   std::int64_t t_us = 0;
-  Pose2 odometry;        ///< cumulative odometry pose
-  Pose3 robot_T_camera;  ///< recorded camera pose (head motion)
-  std::string camera_id; ///< empty: camera.yaml; else cameras/<id>.yaml
+  Pose2 odometry;         ///< cumulative odometry pose
+  Pose3 robot_T_camera;   ///< recorded camera pose (head motion)
+  std::string camera_id;  ///< empty: camera.yaml; else cameras/<id>.yaml
 };
 
 struct GroundTruthRecord {
@@ -38,7 +38,7 @@ struct GroundTruthRecord {
 struct HintRecord {
   std::int64_t t_us = 0;
   std::string kind;
-  std::optional<Pose2> pose;                     ///< empty when the row leaves it empty
+  std::optional<Pose2> pose;                               ///< empty when the row leaves it empty
   double sigma_x = 0.0, sigma_y = 0.0, sigma_theta = 0.0;  ///< m, m, rad
 };
 
@@ -46,9 +46,9 @@ struct HintRecord {
 /// within 4 m) in that frame.
 struct VisibleRecord {
   std::int64_t t_us = 0;
-  std::string feature;           ///< e.g. "segments[3]", "arcs[0]", "marks[1]"
+  std::string feature;  ///< e.g. "segments[3]", "arcs[0]", "marks[1]"
   double visible_length_m = 0.0;
-  double direction_deg = 0.0;    ///< field-frame direction of a segment in [0, 180); arcs: 0
+  double direction_deg = 0.0;  ///< field-frame direction of a segment in [0, 180); arcs: 0
 };
 
 /// One row of truth/events.csv: KIDNAP, FALL_START or FALL_END.
@@ -60,14 +60,14 @@ struct EventRecord {
 /// A recorded image folder in memory (DESIGN §5.1); images stay on disk.
 struct Recording {
   std::string folder;
-  std::optional<CameraIntrinsics> camera;            ///< camera.yaml
-  std::map<std::string, CameraIntrinsics> cameras;   ///< cameras/<id>.yaml
+  std::optional<CameraIntrinsics> camera;           ///< camera.yaml
+  std::map<std::string, CameraIntrinsics> cameras;  ///< cameras/<id>.yaml
   std::vector<FrameRecord> frames;
   std::vector<GroundTruthRecord> ground_truth;
   std::vector<HintRecord> hints;
-  std::optional<FieldModel> field;                   ///< field.yaml
-  std::vector<VisibleRecord> visible;                ///< truth/visible.csv
-  std::vector<EventRecord> events;                   ///< truth/events.csv
+  std::optional<FieldModel> field;     ///< field.yaml
+  std::vector<VisibleRecord> visible;  ///< truth/visible.csv
+  std::vector<EventRecord> events;     ///< truth/events.csv
 
   /// Intrinsics for a frame's camera id; throws RecordingError when they are missing.
   const CameraIntrinsics& intrinsicsFor(const FrameRecord& frame) const;

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <string>
+
+#include "field_models/format_error.h"
+#include "field_models/standard_fields.h"
+
+namespace houghloc {
+
+/// Import of the RoboCup SPL `field_dimensions.json` exactly as DESIGN §4 defines it: the top
+/// level is exactly {"field": {...}, "goal": {...}}, every value is a non-zero JSON number within
+/// the range of the table, goalAreaLength and goalAreaWidth come both or neither (neither = the
+/// 2019 field without goal areas), and missing, unknown, duplicate or outdated keys are errors.
+/// Every error is a FormatError naming the source and the key, e.g.
+/// "field_dimensions.json: field.lineWidth: must be exactly 0.05, got 0.04".
+
+/// Parses JSON text; `source_name` names it in error messages (usually the file name).
+FieldDimensions parseSplFieldDimensions(const std::string& json_text,
+                                        const std::string& source_name);
+
+/// Reads and parses a field_dimensions.json file.
+FieldDimensions readSplFieldDimensions(const std::string& path);
+
+/// makeField(readSplFieldDimensions(path)).
+FieldModel importSplField(const std::string& path);
+
+}  // namespace houghloc

@@ -1,0 +1,128 @@
+// Step 4 of GlobalHoughLocalizer after pruning: refinement, observability, the paper's
+// parallel-only Gaussian, and the final score with negative evidence.
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+#include "localization/global_hough_localizer.h"
+
+namespace houghloc {
+namespace {
+
+/// Interval of s for which t0 + s u stays inside |x| <= hx, |y| <= hy.
+bool carpetInterval(const Eigen::Vector2d& t0, const Eigen::Vector2d& u, double hx, double hy,
+                    double* s_min, double* s_max) {
+  *s_min = -1e9;
+  *s_max = 1e9;
+  const double half[2] = {hx, hy};
+  for (int k = 0; k < 2; ++k) {
+    if (std::abs(u[k]) < 1e-9) {
+      if (std::abs(t0[k]) > half[k]) return false;
+      continue;
+    }
+    const double a = (-half[k] - t0[k]) / u[k], b = (half[k] - t0[k]) / u[k];
+    *s_min = std::max(*s_min, std::min(a, b));
+    *s_max = std::min(*s_max, std::max(a, b));
+  }
+  return *s_min <= *s_max;
+}
+
+}  // namespace
+
+std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
+    const PoseHypothesis& candidate, const WeightedPoints& points,
+    const VisibilityEvidence& evidence) const {
+  PoseHypothesis h = candidate;
+  const bool was_parallel = h.kind == HypothesisKind::kParallel;
+  RefinementResult r = refinePose(points, h.field_T_robot, map_.features(), config_.refinement,
+                                  was_parallel ? h.line_direction : Eigen::Vector2d::Zero());
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(r.information.topLeftCorner<2, 2>());
+  const bool observed = eig.eigenvalues()(0) >= config_.min_observed_weight;
+  if (observed && was_parallel) {
+    r = refinePose(points, r.field_T_robot, map_.features(), config_.refinement);
+  }
+  h.field_T_robot = r.field_T_robot;
+  h.covariance = r.covariance;
+  h.rms_m = r.rms_m;
+  if (!observed) {
+    // Only parallel lines constrain the position: the paper's case M = 1.
+    h.kind = HypothesisKind::kParallel;
+    h.line_direction = eig.eigenvectors().col(0).normalized();
+    return placeAlongLines(h, points, evidence);
+  }
+  h.kind = HypothesisKind::kFull;
+  h.line_direction.setZero();
+  finish(h, points, evidence);
+  return {h};
+}
+
+std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
+    const PoseHypothesis& candidate, const WeightedPoints& points,
+    const VisibilityEvidence& evidence) const {
+  const Eigen::Vector2d u = candidate.line_direction;
+  const Eigen::Vector2d t0 = candidate.field_T_robot.translation();
+  const double theta = candidate.field_T_robot.theta;
+  double s_min, s_max;
+  if (!carpetInterval(t0, u, map_.field().outerHalfLength(), map_.field().outerHalfWidth(), &s_min,
+                      &s_max)) {
+    return {};
+  }
+  // Scan along the lines: where the points fit the segments and no line is missing.
+  const WeightedPoints few = subsamplePoints(points, config_.prescore_points);
+  const double step = config_.line_scan_step_m;
+  std::vector<double> s_values, scores;
+  for (double s = s_min; s <= s_max + 1e-9; s += step) {
+    const Eigen::Vector2d t = t0 + s * u;
+    s_values.push_back(s);
+    scores.push_back(totalScore(Pose2(t.x(), t.y(), theta), few, evidence));
+  }
+  if (scores.empty()) return {};
+  const double best = *std::max_element(scores.begin(), scores.end());
+  const double floor = best - config_.line_scan_tolerance * std::max(std::abs(best), 1.0);
+  struct Stretch {
+    double begin, end, top;
+  };
+  std::vector<Stretch> stretches;
+  for (std::size_t i = 0; i < scores.size(); ++i) {
+    if (scores[i] < floor) continue;
+    if (i > 0 && scores[i - 1] >= floor) {
+      stretches.back().end = s_values[i];
+      stretches.back().top = std::max(stretches.back().top, scores[i]);
+    } else {
+      stretches.push_back({s_values[i], s_values[i], scores[i]});
+    }
+  }
+  std::sort(stretches.begin(), stretches.end(),
+            [](const Stretch& a, const Stretch& b) { return a.top > b.top; });
+  std::vector<PoseHypothesis> out;
+  for (const Stretch& stretch : stretches) {
+    if (out.size() >= 3) break;
+    const Eigen::Vector2d t = t0 + 0.5 * (stretch.begin + stretch.end) * u;
+    PoseHypothesis h = candidate;
+    const RefinementResult r = refinePose(points, Pose2(t.x(), t.y(), theta), map_.features(),
+                                          config_.refinement, u);
+    h.field_T_robot = r.field_T_robot;
+    // Large variance along the lines, covering the stretch (+ one scan step each side).
+    const double along = 0.25 * (stretch.end - stretch.begin + 2.0 * step) + 0.3;
+    const Eigen::Matrix2d p = Eigen::Matrix2d::Identity() - u * u.transpose();
+    h.covariance = r.covariance;
+    h.covariance.topLeftCorner<2, 2>() =
+        p * r.covariance.topLeftCorner<2, 2>() * p + along * along * u * u.transpose();
+    h.covariance.topRightCorner<2, 1>() = p * r.covariance.topRightCorner<2, 1>();
+    h.covariance.bottomLeftCorner<1, 2>() = h.covariance.topRightCorner<2, 1>().transpose();
+    h.rms_m = r.rms_m;
+    finish(h, points, evidence);
+    out.push_back(h);
+  }
+  return out;
+}
+
+void GlobalHoughLocalizer::finish(PoseHypothesis& h, const WeightedPoints& points,
+                                  const VisibilityEvidence& evidence) const {
+  const PoseScore s = scorePose(points, h.field_T_robot, map_.grid(), config_.scoring);
+  h.penalty = evidence.penalty(h.field_T_robot, map_);
+  h.score = s.score - h.penalty;
+  h.inlier_share = s.inlier_share;
+}
+
+}  // namespace houghloc

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "field_models/field_model.h"
+
+namespace houghloc {
+
+/// Nearest line feature of a map, precomputed per cell, for the point-to-line residuals of the
+/// Gauss-Newton refinement (paper step 4, "refine the survivors").
+class FeatureLookup {
+ public:
+  /// Residual of one field point against its nearest feature: distance (m) and the unit direction
+  /// from the feature to the point (d distance / d point). For a segment interior this is the
+  /// point-to-line distance along the line normal.
+  struct Residual {
+    double distance_m = 0.0;
+    Eigen::Vector2d direction = Eigen::Vector2d::Zero();
+    bool valid = false;
+  };
+
+  FeatureLookup() = default;
+  /// Cells of `resolution_m` over the carpet plus `margin_m`.
+  FeatureLookup(const FieldModel& field, double resolution_m, double margin_m);
+
+  /// distance_m is signed for segment interiors and arcs (side of the line), >= 0 otherwise.
+  Residual residual(const Eigen::Vector2d& p_field) const;
+
+ private:
+  FieldModel field_copy_;
+  Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
+  double resolution_ = 0.05;
+  int cols_ = 0, rows_ = 0;
+  std::vector<FeatureRef> cells_;
+};
+
+}  // namespace houghloc

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <cstddef>
+
+#include "localization/hypothesis_set.h"
+#include "localization/landmarks.h"
+#include "localization/map_signature.h"
+#include "localization/negative_evidence.h"
+#include "localization/orientation_search.h"
+#include "localization/pose_refinement.h"
+#include "localization/pose_scoring.h"
+#include "localization/pose_solver.h"
+#include "localization/translation_search.h"
+
+namespace houghloc {
+
+/// Everything GlobalHoughLocalizer can be tuned with (YAML section `global:`, DESIGN §2).
+struct GlobalHoughConfig {
+  double max_range_m = 8.0;              ///< points farther than this are dropped
+  std::size_t max_points = 1500;         ///< larger inputs are subsampled evenly
+  std::size_t prescore_points = 80;      ///< points used to pre-score the raw candidates
+  std::size_t min_points = 6;            ///< fewer points: no hypothesis
+  double min_spread_m = 0.1;             ///< std dev along the points' main axis, else none
+  double min_observed_weight = 4.0;      ///< point weight on lines across a direction for it to
+                                         ///< count as observed (else the pose is kParallel)
+  double line_scan_step_m = 0.1;         ///< step of the scan along parallel lines
+  double line_scan_tolerance = 0.1;      ///< positions within this share of the best score are
+                                         ///< equally likely along the lines
+  bool use_circle = true;                ///< beyond the paper: centre-circle candidates
+  bool use_marks = true;                 ///< beyond the paper: penalty-mark candidates
+
+  MapSignatureConfig map;
+  OrientationConfig orientation;
+  TranslationConfig translation;
+  PoseSolverConfig solver;
+  ScoringConfig scoring;
+  PruningConfig pruning;
+  RefinementConfig refinement;
+  NegativeEvidenceConfig negative;
+  LandmarkConfig landmarks;
+  HypothesisSetConfig hypotheses;
+};
+
+}  // namespace houghloc

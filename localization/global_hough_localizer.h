@@ -1,0 +1,65 @@
+#pragma once
+
+#include <vector>
+
+#include "field_models/ground_points.h"
+#include "localization/global_hough_config.h"
+
+namespace houghloc {
+
+/// Global Hough Localization (Grisetti, Iocchi, Nardi; DESIGN Appendix A): Gaussian pose
+/// hypotheses from one frame of ground points and no prior. The map part is computed once in the
+/// constructor; locate() is const and keeps no state between frames.
+class GlobalHoughLocalizer {
+ public:
+  explicit GlobalHoughLocalizer(const FieldModel& field, const GlobalHoughConfig& config = {});
+
+  /// Hypotheses best first, weights summing to 1, at most config.hypotheses.max_hypotheses. Empty
+  /// when the points carry no line (none, too few, all on one spot); heading-only hypotheses
+  /// when lines are seen but no translation fits.
+  std::vector<PoseHypothesis> locate(const GroundPoints& frame) const;
+
+  const MapSignature& map() const { return map_; }
+  const GlobalHoughConfig& config() const { return config_; }
+
+  // The steps locate() calls in order, public for tests and tools.
+  /// Finite points with positive weight within max_range_m, at most max_points.
+  WeightedPoints preparePoints(const GroundPoints& frame) const;
+  /// False when the points cannot carry a line (too few, all on one spot).
+  bool hasLineSupport(const WeightedPoints& points) const;
+  /// Step 1: HT_S.
+  HoughTransform sensorTransform(const WeightedPoints& points) const;
+  /// Step 2: heading candidates theta_R (each with its pi twin).
+  std::vector<OrientationCandidate> orientationCandidates(const HoughTransform& sensor) const;
+  /// Step 3: constraints per dominant map direction for one heading.
+  std::vector<std::vector<TranslationConstraint>> translationConstraints(
+      const WeightedPoints& points, double theta_r) const;
+  /// Beyond the paper: poses from the centre circle and the penalty marks.
+  std::vector<PoseHypothesis> landmarkPoses(const WeightedPoints& points,
+                                            const std::vector<OrientationCandidate>& headings) const;
+  /// Step 4 scoring: score and inlier share of every candidate against the whole map.
+  void scoreCandidates(std::vector<PoseHypothesis>& candidates, const WeightedPoints& points) const;
+  /// Step 4 refinement of one survivor: Gauss-Newton, observability (kParallel when only parallel
+  /// lines constrain it; then a scan along the lines places the mean), covariance, final score
+  /// including negative evidence.
+  /// A kParallel candidate can come back as several hypotheses, one per stretch of the lines
+  /// where the points fit equally well.
+  std::vector<PoseHypothesis> refineCandidate(const PoseHypothesis& candidate,
+                                              const WeightedPoints& points,
+                                              const VisibilityEvidence& evidence) const;
+
+ private:
+  double totalScore(const Pose2& pose, const WeightedPoints& points,
+                    const VisibilityEvidence& evidence, double* penalty = nullptr) const;
+  std::vector<PoseHypothesis> placeAlongLines(const PoseHypothesis& candidate,
+                                              const WeightedPoints& points,
+                                              const VisibilityEvidence& evidence) const;
+  void finish(PoseHypothesis& candidate, const WeightedPoints& points,
+              const VisibilityEvidence& evidence) const;
+  bool onCarpet(const Pose2& pose) const;
+
+  GlobalHoughConfig config_;
+  MapSignature map_;
+};
+
+}  // namespace houghloc

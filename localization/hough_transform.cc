@@ -1,0 +1,73 @@
+#include "localization/hough_transform.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace houghloc {
+namespace {
+
+/// Splits `weight` between the two rows around fractional row `r` (kernel K of step 1).
+inline void vote(float* column, int rows, double r, double weight) {
+  const double fl = std::floor(r);
+  const int j = static_cast<int>(fl);
+  const double f = r - fl;
+  if (j >= 0 && j < rows) column[j] += static_cast<float>(weight * (1.0 - f));
+  if (j + 1 >= 0 && j + 1 < rows) column[j + 1] += static_cast<float>(weight * f);
+}
+
+}  // namespace
+
+double WeightedPoints::totalWeight() const {
+  double sum = 0.0;
+  for (double w : weights) sum += w;
+  return sum;
+}
+
+int houghRows(double rho_step_m, double rho_max_m) {
+  return 2 * static_cast<int>(std::ceil(rho_max_m / rho_step_m - 1e-9)) + 1;
+}
+
+HoughTransform::HoughTransform(const HoughConfig& config, double rho_max_m) : config_(config) {
+  if (!(config.theta_step_rad > 0.0) || !(config.rho_step_m > 0.0) || !(rho_max_m > 0.0)) {
+    throw std::invalid_argument("HoughTransform: theta_step_rad, rho_step_m, rho_max must be > 0");
+  }
+  num_theta_ = static_cast<int>(std::lround(M_PI / config.theta_step_rad));
+  config_.theta_step_rad = M_PI / num_theta_;  // an exact divisor of pi keeps the wrap exact
+  num_rho_ = houghRows(config.rho_step_m, rho_max_m);
+  centre_row_ = (num_rho_ - 1) / 2;
+  cos_.resize(num_theta_);
+  sin_.resize(num_theta_);
+  for (int i = 0; i < num_theta_; ++i) {
+    cos_[i] = std::cos(theta(i));
+    sin_[i] = std::sin(theta(i));
+  }
+  cells_.assign(static_cast<std::size_t>(num_theta_) * num_rho_, 0.0f);
+}
+
+void HoughTransform::addPoint(const Eigen::Vector2d& p, double weight) {
+  if (!p.allFinite() || !std::isfinite(weight) || cells_.empty()) return;
+  const double inv_step = 1.0 / config_.rho_step_m;
+  for (int i = 0; i < num_theta_; ++i) {
+    const double rho = p.x() * cos_[i] + p.y() * sin_[i];
+    vote(&cells_[index(i, 0)], num_rho_, rho * inv_step + centre_row_, weight);
+  }
+}
+
+void HoughTransform::addPoints(const WeightedPoints& points) {
+  for (std::size_t k = 0; k < points.size(); ++k) addPoint(points.points[k], points.weights[k]);
+}
+
+std::vector<float> houghColumn(const WeightedPoints& points, double theta_rad, double rho_step_m,
+                               double rho_max_m) {
+  const int rows = houghRows(rho_step_m, rho_max_m);
+  const int centre = (rows - 1) / 2;
+  std::vector<float> column(rows, 0.0f);
+  const double c = std::cos(theta_rad) / rho_step_m, s = std::sin(theta_rad) / rho_step_m;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Eigen::Vector2d& p = points.points[k];
+    vote(column.data(), rows, p.x() * c + p.y() * s + centre, points.weights[k]);
+  }
+  return column;
+}
+
+}  // namespace houghloc

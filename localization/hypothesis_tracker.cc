@@ -1,0 +1,179 @@
+#include "localization/hypothesis_tracker.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "localization/point_update.h"
+
+namespace houghloc {
+
+const char* trackerStatusName(TrackerStatus status) {
+  switch (status) {
+    case TrackerStatus::kInitializing:
+      return "INITIALIZING";
+    case TrackerStatus::kTracking:
+      return "TRACKING";
+    case TrackerStatus::kAmbiguous:
+      return "AMBIGUOUS";
+    case TrackerStatus::kLost:
+      return "LOST";
+  }
+  return "LOST";
+}
+
+HypothesisTracker::HypothesisTracker(const FieldModel& field, const TrackerConfig& config)
+    : HypothesisTracker(std::make_shared<const FeatureIndex>(field, config.index), config) {}
+
+HypothesisTracker::HypothesisTracker(std::shared_ptr<const FeatureIndex> index,
+                                     const TrackerConfig& config)
+    : config_(config),
+      index_(index ? std::move(index) : std::make_shared<const FeatureIndex>()),
+      odometry_(config.odometry) {}
+
+void HypothesisTracker::update(std::int64_t t_us, const std::optional<Pose2>& odometry,
+                               const GroundPoints& points) {
+  predict(t_us, odometry);
+  correct(points);
+}
+
+void HypothesisTracker::predict(std::int64_t t_us, const std::optional<Pose2>& odometry) {
+  const MotionStep step = odometry_.step(t_us, odometry);
+  stats_.odometry_jump = step.jump;
+  stats_.time_backwards = step.time_backwards;
+  jump_since_injection_ = jump_since_injection_ || step.jump;
+  seconds_since_injection_ += step.dt_s;
+  stats_.seconds_without_points += step.dt_s;
+  for (TrackedHypothesis& h : hypotheses_) {
+    if (step.has_motion) predictWithMotion(step.motion, step.dt_s, config_.motion, &h.pose);
+    if (step.unknown_s > 0.0) inflateUnknownMotion(step.unknown_s, config_.motion, &h.pose);
+    ++h.age_frames;
+  }
+}
+
+void HypothesisTracker::correct(const GroundPoints& points) {
+  stats_.points_in = 0;
+  for (const GroundPoint& p : points.points) stats_.points_in += p.p_robot.allFinite() ? 1 : 0;
+  stats_.points_used = 0;
+  stats_.best_inlier_share = 0.0;
+  if (stats_.points_in > 0) stats_.seconds_without_points = 0.0;
+  if (hypotheses_.empty() || stats_.points_in < config_.update.min_points) return;
+
+  std::vector<double> log_likelihood(hypotheses_.size());
+  const bool judge = stats_.points_in >= config_.min_points_to_judge;
+  for (size_t k = 0; k < hypotheses_.size(); ++k) {
+    TrackedHypothesis& h = hypotheses_[k];
+    const PointUpdateResult r =
+        updateWithGroundPoints(h.pose, points.points, *index_, config_.update);
+    h.pose = r.posterior;
+    h.inlier_share = r.inlier_share;
+    h.points_associated = r.num_associated;
+    if (judge) {
+      const bool disagrees = r.inlier_share < config_.disagree_inlier_share;
+      h.disagreeing_frames = disagrees ? h.disagreeing_frames + 1 : 0;
+    }
+    log_likelihood[k] = config_.likelihood_points * r.mean_log_likelihood;
+  }
+  // Bayes: weight *= frame likelihood; relative to the best, so exp() cannot overflow.
+  const double best = *std::max_element(log_likelihood.begin(), log_likelihood.end());
+  for (size_t k = 0; k < hypotheses_.size(); ++k) {
+    const double ratio = std::exp(std::max(log_likelihood[k] - best, -700.0));
+    hypotheses_[k].pose.weight *= std::isfinite(ratio) ? ratio : 0.0;
+  }
+  finishSet();
+  if (!hypotheses_.empty()) {
+    stats_.best_inlier_share = hypotheses_.front().inlier_share;
+    stats_.points_used = hypotheses_.front().points_associated;
+  }
+}
+
+void HypothesisTracker::injectHypotheses(const std::vector<GaussianPose>& poses) {
+  std::vector<GaussianPose> weighted = poses;
+  for (GaussianPose& p : weighted) {
+    for (const TrackedHypothesis& h : hypotheses_) {
+      const bool established =
+          h.age_frames >= config_.established_age_frames && h.disagreeing_frames == 0;
+      if (established && areMirrors(h.pose.mean, p.mean, config_.mirror_tolerance_m,
+                                    config_.mirror_tolerance_rad)) {
+        p.weight *= config_.established_mirror_factor;
+        break;
+      }
+    }
+  }
+  addPoses(weighted, config_.injected_share);
+  markInjected();
+}
+
+void HypothesisTracker::markInjected() {
+  seconds_since_injection_ = 0.0;
+  jump_since_injection_ = false;
+  // Fresh hypotheses get a fresh chance: old disagreement counts no longer ask for more.
+  for (TrackedHypothesis& h : hypotheses_) h.disagreeing_frames = 0;
+}
+
+void HypothesisTracker::addPoses(const std::vector<GaussianPose>& poses, double share) {
+  std::vector<GaussianPose> valid;
+  double sum = 0.0;
+  for (GaussianPose p : poses) {
+    if (!p.mean.isFinite()) continue;
+    sanitizeCovariance(config_.motion, &p.covariance);
+    p.weight = std::isfinite(p.weight) && p.weight > 0.0 ? p.weight : 0.0;
+    sum += p.weight;
+    valid.push_back(p);
+  }
+  if (valid.empty()) return;
+  // With nothing tracked the new poses take all the weight; otherwise `share` of it.
+  const double total = hypotheses_.empty() ? 1.0 : std::clamp(share, 0.0, 1.0);
+  normalizeTrackedWeights(&hypotheses_);
+  for (auto& h : hypotheses_) h.pose.weight *= 1.0 - total;
+  for (const GaussianPose& p : valid) {
+    TrackedHypothesis h;
+    h.pose = p;
+    h.pose.weight = total * (sum > 0.0 ? p.weight / sum : 1.0 / valid.size());
+    h.id = next_id_++;
+    hypotheses_.push_back(h);
+  }
+  finishSet();
+}
+
+void HypothesisTracker::finishSet() {
+  normalizeTrackedWeights(&hypotheses_);
+  mergeConverged(config_.set, &hypotheses_);
+  pruneWeak(config_.set, &hypotheses_);
+}
+
+bool HypothesisTracker::bestIsLost() const {
+  if (hypotheses_.empty()) return false;
+  const TrackedHypothesis& best = hypotheses_.front();
+  const double var_xy = std::max(best.pose.covariance(0, 0), best.pose.covariance(1, 1));
+  return best.disagreeing_frames >= config_.disagree_frames ||
+         !(var_xy <= config_.lost_sigma_m * config_.lost_sigma_m);
+}
+
+bool HypothesisTracker::needsGlobalHypotheses() const {
+  if (hypotheses_.empty() || jump_since_injection_ || bestIsLost()) return true;
+  if (hypotheses_.front().pose.weight < config_.low_best_weight) return true;
+  return seconds_since_injection_ >= config_.periodic_global_s;
+}
+
+bool HypothesisTracker::topHypothesesMirrorAmbiguous() const {
+  if (hypotheses_.size() < 2) return false;
+  const TrackedHypothesis& best = hypotheses_.front();
+  for (size_t k = 1; k < hypotheses_.size(); ++k) {
+    const TrackedHypothesis& h = hypotheses_[k];
+    if (h.pose.weight < config_.ambiguous_weight_ratio * best.pose.weight) break;  // sorted
+    if (areMirrors(best.pose.mean, h.pose.mean, config_.mirror_tolerance_m,
+                   config_.mirror_tolerance_rad)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+TrackerStatus HypothesisTracker::status() const {
+  if (hypotheses_.empty()) return TrackerStatus::kInitializing;
+  if (bestIsLost()) return TrackerStatus::kLost;
+  if (topHypothesesMirrorAmbiguous()) return TrackerStatus::kAmbiguous;
+  return TrackerStatus::kTracking;
+}
+
+}  // namespace houghloc

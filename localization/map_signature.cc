@@ -1,0 +1,109 @@
+#include "localization/map_signature.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace houghloc {
+namespace {
+
+void sampleSegment(const Segment2& s, double spacing, WeightedPoints& out) {
+  const int n = std::max(1, static_cast<int>(std::ceil(s.length() / spacing)));
+  for (int i = 0; i <= n; ++i) {
+    out.points.push_back(s.a + (s.b - s.a) * (static_cast<double>(i) / n));
+    out.weights.push_back(1.0);
+  }
+}
+
+void sampleArc(const Arc2& arc, double spacing, WeightedPoints& out) {
+  const int n = std::max(2, static_cast<int>(std::ceil(arc.length() / spacing)));
+  const int last = arc.isFullCircle() ? n - 1 : n;
+  for (int i = 0; i <= last; ++i) {
+    out.points.push_back(arc.pointAt(arc.start_rad + arc.sweep_rad * i / n));
+    out.weights.push_back(1.0);
+  }
+}
+
+/// Local maxima of a circular profile above `share` of its largest value, strongest first.
+std::vector<int> circularMaxima(const std::vector<double>& v, double share) {
+  const int n = static_cast<int>(v.size());
+  std::vector<int> out;
+  if (n == 0) return out;
+  const double top = *std::max_element(v.begin(), v.end());
+  for (int i = 0; i < n; ++i) {
+    const double prev = v[(i + n - 1) % n], next = v[(i + 1) % n];
+    if (v[i] > prev && v[i] >= next && v[i] > 0.0 && v[i] >= share * top) out.push_back(i);
+  }
+  std::sort(out.begin(), out.end(), [&](int a, int b) { return v[a] > v[b]; });
+  return out;
+}
+
+}  // namespace
+
+WeightedPoints sampleMapLines(const FieldModel& field, double spacing_m, bool include_marks) {
+  WeightedPoints out;
+  for (const Segment2& s : field.segments) sampleSegment(s, spacing_m, out);
+  for (const Arc2& a : field.arcs) sampleArc(a, spacing_m, out);
+  if (include_marks) {
+    for (const Mark& m : field.marks) {
+      const double h = 0.5 * m.size;
+      sampleSegment({m.center - Eigen::Vector2d(h, 0), m.center + Eigen::Vector2d(h, 0)},
+                    spacing_m, out);
+      sampleSegment({m.center - Eigen::Vector2d(0, h), m.center + Eigen::Vector2d(0, h)},
+                    spacing_m, out);
+    }
+  }
+  return out;
+}
+
+std::vector<double> orientationProfile(const HoughTransform& transform) {
+  std::vector<double> h(transform.numTheta(), 0.0);
+  for (int i = 0; i < transform.numTheta(); ++i) {
+    const float* col = transform.column(i);
+    double sum = 0.0;
+    for (int j = 0; j < transform.numRho(); ++j) sum += static_cast<double>(col[j]) * col[j];
+    h[i] = sum;
+  }
+  double mean = 0.0;
+  for (double v : h) mean += v;
+  mean /= std::max<std::size_t>(1, h.size());
+  double norm = 0.0;
+  for (double& v : h) {
+    v -= mean;
+    norm += v * v;
+  }
+  norm = std::sqrt(norm);
+  // A flat profile (one point, a point cloud without lines) carries no heading information.
+  if (!(norm > 1e-9 * std::max(1.0, std::abs(mean)) * std::sqrt(h.size()))) {
+    std::fill(h.begin(), h.end(), 0.0);
+    return h;
+  }
+  for (double& v : h) v /= norm;
+  return h;
+}
+
+MapSignature::MapSignature(const FieldModel& field, const MapSignatureConfig& config)
+    : field_(field), config_(config) {
+  rho_max_ = std::hypot(field.outerHalfLength(), field.outerHalfWidth()) + 0.5;
+  const WeightedPoints samples = sampleMapLines(field, config.sample_spacing_m, true);
+  transform_ = HoughTransform(config.hough, rho_max_);
+  transform_.addPoints(samples);
+  profile_ = orientationProfile(transform_);
+  const double step = transform_.config().theta_step_rad;
+  const float min_votes = static_cast<float>(config.mask_min_line_m / config.sample_spacing_m);
+  for (int i : circularMaxima(profile_, config.dominant_share)) {
+    dominant_.push_back(i * step);
+    std::vector<float> col =
+        houghColumn(samples, i * step, transform_.config().rho_step_m, rho_max_);
+    for (float& v : col) v = v >= min_votes ? 1.0f : 0.0f;
+    masks_.push_back(std::move(col));
+  }
+  grid_ = DistanceGrid(field, config.grid);
+  features_ = FeatureLookup(field, config.lookup_resolution_m, config.grid.margin_m);
+  const WeightedPoints evidence = sampleMapLines(field, config.evidence_spacing_m, false);
+  evidence_ = evidence.points;
+  for (const Arc2& a : field.arcs) {
+    if (a.isFullCircle()) circles_.push_back(a);
+  }
+}
+
+}  // namespace houghloc

@@ -1,0 +1,166 @@
+#include "localization/negative_evidence.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "field_models/line_features.h"
+
+namespace houghloc {
+
+bool insidePolygon(const GroundPolygon& poly, const Eigen::Vector2d& p) {
+  bool inside = false;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Eigen::Vector2d& a = poly[i];
+    const Eigen::Vector2d& b = poly[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+double distanceToBoundary(const GroundPolygon& poly, const Eigen::Vector2d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    best = std::min(best, Segment2{poly[j], poly[i]}.distanceTo(p));
+  }
+  return best;
+}
+
+VisibilityEvidence::VisibilityEvidence(const GroundPoints& frame, const WeightedPoints& points,
+                                       const NegativeEvidenceConfig& config)
+    : config_(config) {
+  if (!config.enabled) return;
+  std::vector<GroundPolygon> polygons;
+  for (const GroundPolygon& poly : frame.visible_regions) {
+    bool valid = poly.size() >= 3;
+    for (const auto& v : poly) valid &= v.allFinite() && v.norm() < 100.0;  // ground, not sky
+    if (valid) polygons.push_back(poly);
+  }
+  if (polygons.empty()) return;
+  rasterise(polygons);
+  // Mark cells within seen_radius_m of a point; count the occupied ones for the line length.
+  const int reach = static_cast<int>(std::ceil(config.seen_radius_m / config.raster_m));
+  std::vector<char> occupied(cells_.size(), 0);
+  int occupied_count = 0;
+  for (const auto& p : points.points) {
+    const int c = static_cast<int>(std::floor((p.x() - origin_.x()) / config.raster_m));
+    const int r = static_cast<int>(std::floor((p.y() - origin_.y()) / config.raster_m));
+    if (c < 0 || r < 0 || c >= cols_ || r >= rows_) continue;
+    char& o = occupied[static_cast<std::size_t>(r) * cols_ + c];
+    occupied_count += o == 0;
+    if (o) continue;
+    o = 1;
+    for (int rr = std::max(0, r - reach); rr <= std::min(rows_ - 1, r + reach); ++rr) {
+      for (int cc = std::max(0, c - reach); cc <= std::min(cols_ - 1, c + reach); ++cc) {
+        cells_[static_cast<std::size_t>(rr) * cols_ + cc] |= 4;
+      }
+    }
+  }
+  // Seen line length ~ occupied cells * cell size; density converts metres to point weight.
+  density_ = occupied_count > 0 ? points.totalWeight() / (occupied_count * config.raster_m) : 0.0;
+  const int stride = std::max(1, static_cast<int>(std::lround(config.green_spacing_m / config.raster_m)));
+  for (int r = stride / 2; r < rows_; r += stride) {
+    for (int c = stride / 2; c < cols_; c += stride) {
+      if (cells_[static_cast<std::size_t>(r) * cols_ + c] & 1) {
+        green_.push_back(origin_ + config.raster_m * Eigen::Vector2d(c + 0.5, r + 0.5));
+      }
+    }
+  }
+  empty_ = false;
+}
+
+void VisibilityEvidence::rasterise(const std::vector<GroundPolygon>& polygons) {
+  const double cell = config_.raster_m;
+  const int margin = static_cast<int>(std::ceil(config_.margin_m / cell));
+  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (const auto& poly : polygons) {
+    for (const auto& v : poly) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+  }
+  origin_ = lo - Eigen::Vector2d::Constant(config_.seen_radius_m + cell);
+  cols_ = static_cast<int>((hi.x() - origin_.x() + config_.seen_radius_m + cell) / cell) + 1;
+  rows_ = static_cast<int>((hi.y() - origin_.y() + config_.seen_radius_m + cell) / cell) + 1;
+  cells_.assign(static_cast<std::size_t>(cols_) * rows_, 0);
+  // Scanline fill (even-odd per polygon) at the cell centres.
+  std::vector<double> crossings;
+  for (const auto& poly : polygons) {
+    for (int r = 0; r < rows_; ++r) {
+      const double y = origin_.y() + (r + 0.5) * cell;
+      crossings.clear();
+      for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+        const Eigen::Vector2d& a = poly[i];
+        const Eigen::Vector2d& b = poly[j];
+        if ((a.y() > y) != (b.y() > y)) {
+          crossings.push_back(a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+        }
+      }
+      std::sort(crossings.begin(), crossings.end());
+      for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
+        const int c0 = std::max(0, static_cast<int>(std::ceil((crossings[k] - origin_.x()) / cell - 0.5)));
+        const int c1 = std::min(cols_ - 1, static_cast<int>(std::floor((crossings[k + 1] - origin_.x()) / cell - 0.5)));
+        for (int c = c0; c <= c1; ++c) cells_[static_cast<std::size_t>(r) * cols_ + c] |= 1;
+      }
+    }
+  }
+  // Erode the region by the margin (square structuring element): bit 1.
+  for (int r = margin; r < rows_ - margin; ++r) {
+    for (int c = margin; c < cols_ - margin; ++c) {
+      bool all = true;
+      for (int rr = r - margin; rr <= r + margin && all; ++rr) {
+        for (int cc = c - margin; cc <= c + margin && all; ++cc) {
+          all = cells_[static_cast<std::size_t>(rr) * cols_ + cc] & 1;
+        }
+      }
+      if (all) cells_[static_cast<std::size_t>(r) * cols_ + c] |= 2;
+    }
+  }
+}
+
+int VisibilityEvidence::cell(double x, double y) const {
+  const int c = static_cast<int>(std::floor((x - origin_.x()) / config_.raster_m));
+  const int r = static_cast<int>(std::floor((y - origin_.y()) / config_.raster_m));
+  if (c < 0 || r < 0 || c >= cols_ || r >= rows_) return -1;
+  return r * cols_ + c;
+}
+
+double VisibilityEvidence::unseenLineLength(const Pose2& field_T_robot,
+                                            const MapSignature& map) const {
+  if (empty_) return 0.0;
+  const Pose2 robot_T_field = field_T_robot.inverse();
+  const double c = std::cos(robot_T_field.theta), s = std::sin(robot_T_field.theta);
+  int unseen = 0;
+  for (const auto& p : map.evidenceSamples()) {
+    const int k = cell(c * p.x() - s * p.y() + robot_T_field.x, s * p.x() + c * p.y() + robot_T_field.y);
+    if (k >= 0 && (cells_[k] & 6) == 2) ++unseen;  // inside with margin, no point near
+  }
+  return unseen * map.config().evidence_spacing_m;
+}
+
+double VisibilityEvidence::greenOutsideCarpet(const Pose2& field_T_robot,
+                                              const FieldModel& field) const {
+  const double hx = field.outerHalfLength() + config_.outside_margin_m;
+  const double hy = field.outerHalfWidth() + config_.outside_margin_m;
+  const double c = std::cos(field_T_robot.theta), s = std::sin(field_T_robot.theta);
+  int outside = 0;
+  for (const auto& g : green_) {
+    const double x = c * g.x() - s * g.y() + field_T_robot.x;
+    const double y = s * g.x() + c * g.y() + field_T_robot.y;
+    outside += std::abs(x) > hx || std::abs(y) > hy;
+  }
+  return outside * config_.green_spacing_m * config_.green_spacing_m;
+}
+
+double VisibilityEvidence::penalty(const Pose2& field_T_robot, const MapSignature& map) const {
+  if (empty_) return 0.0;
+  return density_ * (config_.line_weight * unseenLineLength(field_T_robot, map) +
+                     config_.outside_weight * greenOutsideCarpet(field_T_robot, map.field()));
+}
+
+}  // namespace houghloc

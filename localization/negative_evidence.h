@@ -1,0 +1,64 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "field_models/ground_points.h"
+#include "field_models/pose2.h"
+#include "localization/hough_transform.h"
+#include "localization/map_signature.h"
+
+namespace houghloc {
+
+/// Beyond the paper: lines the map predicts inside the seen ground region where no point was
+/// found, and green seen where the hypothesis puts the outside of the carpet, count against a
+/// hypothesis (DESIGN §8, issue "go beyond positive evidence").
+struct NegativeEvidenceConfig {
+  bool enabled = true;
+  double margin_m = 0.3;          ///< expected lines count only this far inside the region
+  double seen_radius_m = 0.2;     ///< an expected line sample is seen if a point is this close
+  double line_weight = 0.5;       ///< penalty per unseen metre, in metres of seen line
+  double outside_weight = 1.0;    ///< penalty per m^2 of green beyond the carpet, in m of line
+  double outside_margin_m = 0.3;  ///< green up to this far beyond the carpet is tolerated
+  double green_spacing_m = 0.25;  ///< lattice spacing of the visible-region samples
+  double raster_m = 0.1;          ///< cell of the rasterised visible region and seen points
+};
+
+/// The per-frame part of the negative evidence: the visible region and where points were seen.
+class VisibilityEvidence {
+ public:
+  VisibilityEvidence(const GroundPoints& frame, const WeightedPoints& points,
+                     const NegativeEvidenceConfig& config);
+
+  bool empty() const { return empty_; }
+  /// Point weight per metre of seen line (converts lengths into the score's units).
+  double pointDensity() const { return density_; }
+  /// Metres of map line predicted at least margin_m inside the visible region without a point.
+  double unseenLineLength(const Pose2& field_T_robot, const MapSignature& map) const;
+  /// Area (m^2) of the visible region that the pose puts beyond the carpet plus outside_margin_m.
+  double greenOutsideCarpet(const Pose2& field_T_robot, const FieldModel& field) const;
+  /// Penalty in point weight: density * (line_weight * unseen + outside_weight * green area).
+  double penalty(const Pose2& field_T_robot, const MapSignature& map) const;
+
+ private:
+  void rasterise(const std::vector<GroundPolygon>& polygons);
+  /// Cell index of p_robot in the raster, -1 outside it.
+  int cell(double x, double y) const;
+
+  NegativeEvidenceConfig config_;
+  bool empty_ = true;
+  Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
+  int cols_ = 0, rows_ = 0;
+  /// Per cell: bit 0 inside the region, bit 1 inside with margin, bit 2 near a seen point.
+  std::vector<unsigned char> cells_;
+  std::vector<Eigen::Vector2d> green_;  ///< lattice samples inside the region, robot frame
+  double density_ = 0.0;
+};
+
+/// True when p lies inside the closed polygon (even-odd rule).
+bool insidePolygon(const GroundPolygon& polygon, const Eigen::Vector2d& p);
+
+/// Distance from p to the polygon's boundary.
+double distanceToBoundary(const GroundPolygon& polygon, const Eigen::Vector2d& p);
+
+}  // namespace houghloc

@@ -1,0 +1,127 @@
+#include "localization/point_update.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+
+namespace houghloc {
+namespace {
+
+/// Huber weight for a residual in sigmas: 1 inside the threshold, k / |r| outside.
+double huberWeight(double r_sigmas, double k) {
+  const double a = std::abs(r_sigmas);
+  return a <= k ? 1.0 : k / a;
+}
+
+/// Information matrix of a covariance, regularised so a singular or huge covariance still gives a
+/// usable (tiny) prior instead of NaN.
+Eigen::Matrix3d informationOf(const Eigen::Matrix3d& covariance) {
+  Eigen::Matrix3d p = 0.5 * (covariance + covariance.transpose());
+  p.diagonal().array() += 1e-12;
+  Eigen::LDLT<Eigen::Matrix3d> ldlt(p);
+  Eigen::Matrix3d info = ldlt.solve(Eigen::Matrix3d::Identity());
+  if (ldlt.info() != Eigen::Success || !info.allFinite()) {
+    info = p.diagonal().cwiseMax(1e-12).cwiseInverse().asDiagonal();
+  }
+  return 0.5 * (info + info.transpose());
+}
+
+struct Accumulated {
+  Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
+  int used = 0;
+  double weight_sum = 0.0;
+  int inliers = 0;
+  double log_likelihood_sum = 0.0;
+};
+
+/// One pass over the points at `pose`: gated, robustly weighted normal equations, and the
+/// likelihood statistics (ungated) used for hypothesis weights.
+Accumulated accumulate(const Pose2& pose, const Eigen::Matrix3d& gate_cov,
+                       const std::vector<GroundPoint>& points, const FeatureIndex& index,
+                       const PointUpdateConfig& cfg) {
+  Accumulated acc;
+  const double var = cfg.point_sigma_m * cfg.point_sigma_m;
+  const double inv_lik_var = 1.0 / (cfg.likelihood_sigma_m * cfg.likelihood_sigma_m);
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  for (const GroundPoint& gp : points) {
+    const Eigen::Vector2d& q = gp.p_robot;
+    if (!q.allFinite() || !(gp.weight > 0.0) || !std::isfinite(gp.weight)) continue;
+    const Eigen::Vector2d arm(c * q.x() - s * q.y(), s * q.x() + c * q.y());
+    const Eigen::Vector2d p = arm + Eigen::Vector2d(pose.x, pose.y);
+    Association a;
+    if (!index.associate(p, &a)) {
+      acc.log_likelihood_sum -= 0.5 * cfg.outlier_chi2;
+      continue;
+    }
+    acc.log_likelihood_sum -=
+        0.5 * std::min(a.distance_m * a.distance_m * inv_lik_var, cfg.outlier_chi2);
+    if (a.distance_m <= cfg.inlier_m) ++acc.inliers;
+    if (a.distance_m > cfg.max_association_m) continue;
+    // d p / d theta = Rz'(theta) q = perp(arm).
+    const Eigen::Vector3d j(a.normal.x(), a.normal.y(),
+                            a.normal.dot(Eigen::Vector2d(-arm.y(), arm.x())));
+    const double innovation_var = j.dot(gate_cov * j) + var;
+    if (a.residual_m * a.residual_m > cfg.gate_chi2 * innovation_var) continue;
+    const double w = gp.weight * huberWeight(a.residual_m / cfg.point_sigma_m, cfg.huber_sigmas);
+    acc.jtj.noalias() += w * j * j.transpose();
+    acc.jtr.noalias() += (w * a.residual_m) * j;
+    acc.weight_sum += w;
+    ++acc.used;
+  }
+  return acc;
+}
+
+}  // namespace
+
+PointUpdateResult updateWithGroundPoints(const GaussianPose& prior,
+                                         const std::vector<GroundPoint>& points,
+                                         const FeatureIndex& index, const PointUpdateConfig& cfg) {
+  PointUpdateResult result;
+  result.posterior = prior;
+  for (const GroundPoint& gp : points) result.num_points += gp.p_robot.allFinite() ? 1 : 0;
+  if (!prior.isFinite() || index.empty() || !(cfg.point_sigma_m > 0.0) ||
+      !(cfg.likelihood_sigma_m > 0.0)) {
+    return result;
+  }
+  const Eigen::Matrix3d prior_info = informationOf(prior.covariance);
+  const double inv_var = 1.0 / (cfg.point_sigma_m * cfg.point_sigma_m);
+  Pose2 x = prior.mean;
+  Eigen::Matrix3d gate_cov = prior.covariance;
+  Eigen::Matrix3d info = prior_info;
+  Accumulated acc;
+  for (int it = 0; it < std::max(1, cfg.max_iterations); ++it) {
+    acc = accumulate(x, gate_cov, points, index, cfg);
+    result.iterations = it + 1;
+    if (acc.used < cfg.min_points) break;
+    const double scale = std::min(1.0, cfg.max_effective_points / std::max(acc.weight_sum, 1e-9));
+    info = prior_info + (scale * inv_var) * acc.jtj;
+    const Eigen::Vector3d rhs =
+        prior_info * poseDifference(prior.mean, x) - (scale * inv_var) * acc.jtr;
+    const Eigen::Vector3d step = info.ldlt().solve(rhs);
+    if (!step.allFinite()) break;
+    x = poseAdd(x, step);
+    result.corrected = true;
+    // Later iterations gate with the shrinking posterior, which rejects more outliers.
+    gate_cov = informationOf(info);
+    if (step.head<2>().norm() < cfg.converged_m && std::abs(step.z()) < cfg.converged_rad) break;
+  }
+  if (result.corrected) {
+    const Eigen::Matrix3d cov = informationOf(info);
+    if (x.isFinite() && cov.allFinite()) {
+      result.posterior.mean = x;
+      result.posterior.covariance = cov;
+    } else {
+      result.corrected = false;
+    }
+  }
+  result.num_associated = acc.used;
+  result.num_inliers = acc.inliers;
+  if (result.num_points > 0) {
+    result.inlier_share = static_cast<double>(acc.inliers) / result.num_points;
+    result.mean_log_likelihood = acc.log_likelihood_sum / result.num_points;
+  }
+  return result;
+}
+
+}  // namespace houghloc

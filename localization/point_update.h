@@ -1,0 +1,47 @@
+#pragma once
+
+#include <vector>
+
+#include "field_models/ground_points.h"
+#include "localization/feature_index.h"
+#include "localization/gaussian_pose.h"
+
+namespace houghloc {
+
+/// Correction of one Gaussian pose by a frame's ground points (Appendix A, tracking): iterated
+/// EKF = Gauss-Newton on prior + robust point-to-line cost, re-associating every iteration.
+struct PointUpdateConfig {
+  double point_sigma_m = 0.03;     ///< std of a ground point across its line, m
+  double max_association_m = 0.5;  ///< points farther from every line are not associated, m
+  double gate_chi2 = 9.0;          ///< Mahalanobis gate r^2 / (J P J^T + sigma^2), 1 dof
+  double huber_sigmas = 1.5;       ///< Huber kernel threshold, in point_sigma_m
+  int max_iterations = 6;          ///< Gauss-Newton iterations per frame
+  double converged_m = 5e-4;       ///< stop when a step moves less than this, m
+  double converged_rad = 5e-4;     ///< and turns less than this, rad
+  /// Points along one line have correlated errors (camera pose, line width); their information is
+  /// scaled so that no more than this many count as independent. Keeps covariances honest.
+  double max_effective_points = 40.0;
+  int min_points = 5;                ///< fewer associated points: no correction
+  double likelihood_sigma_m = 0.05;  ///< std of the per-point likelihood used for weights, m
+  double outlier_chi2 = 9.0;         ///< per-point log-likelihood floor -0.5 * this (outliers)
+  double inlier_m = 0.08;            ///< a point this close to a line is an inlier, m
+};
+
+struct PointUpdateResult {
+  GaussianPose posterior;     ///< weight copied from the prior
+  int num_points = 0;         ///< finite points given
+  int num_associated = 0;     ///< passed the gates in the last iteration
+  int num_inliers = 0;        ///< within inlier_m of a line at the posterior
+  double inlier_share = 0.0;  ///< num_inliers / num_points (0 without points)
+  /// Mean per-point log-likelihood (truncated Gaussian), in [-outlier_chi2 / 2, 0].
+  double mean_log_likelihood = 0.0;
+  int iterations = 0;
+  bool corrected = false;  ///< the posterior differs from the prior
+};
+
+PointUpdateResult updateWithGroundPoints(const GaussianPose& prior,
+                                         const std::vector<GroundPoint>& points,
+                                         const FeatureIndex& index,
+                                         const PointUpdateConfig& config);
+
+}  // namespace houghloc

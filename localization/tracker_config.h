@@ -1,0 +1,47 @@
+#pragma once
+
+#include "localization/feature_index.h"
+#include "localization/motion_model.h"
+#include "localization/odometry_input.h"
+#include "localization/point_update.h"
+#include "localization/tracked_hypotheses.h"
+
+namespace houghloc {
+
+/// Every tunable of the HypothesisTracker (config file section `tracker:`; see docs/tracking.md).
+struct TrackerConfig {
+  MotionModelConfig motion;
+  OdometryInputConfig odometry;
+  PointUpdateConfig update;
+  TrackedSetConfig set;
+  FeatureIndexConfig index;
+
+  /// Frame likelihood = exp(likelihood_points * mean per-point log-likelihood): the frame counts
+  /// as this many independent points when hypotheses are compared. Lower = slower decisions.
+  double likelihood_points = 8.0;
+  /// Weight share of the set given to newly injected global hypotheses (the rest stays).
+  double injected_share = 0.2;
+  /// Weight share given to poses added by an ADD hint.
+  double hint_add_share = 0.5;
+
+  // When to ask for global hypotheses (needsGlobalHypotheses()).
+  int min_points_to_judge = 20;        ///< frames with fewer points do not count as evidence
+  double disagree_inlier_share = 0.5;  ///< a hypothesis explaining fewer points disagrees
+  int disagree_frames = 5;             ///< that many frames in a row: LOST, ask for global
+  double low_best_weight = 0.25;       ///< best normalised weight below this: ask
+  double lost_sigma_m = 0.5;           ///< best position std above this: LOST, ask
+  double periodic_global_s = 3.0;      ///< otherwise ask at this period, s
+
+  // Symmetry and hints.
+  double mirror_tolerance_m = 0.3;      ///< a hypothesis this close to another's mirror, m
+  double mirror_tolerance_rad = 0.3;    ///< and in heading, rad
+  double ambiguous_weight_ratio = 0.5;  ///< mirror weight >= this * best weight: AMBIGUOUS
+  double own_half_margin_m = 0.5;       ///< OWN_HALF mirrors hypotheses with x > this, m
+  /// Continuity: an injected pose at the mirror of an established hypothesis (older than
+  /// established_age_frames, agreeing with the observations) gets this factor on its weight, so
+  /// low-rate injections do not re-create a symmetry the history already resolved.
+  double established_mirror_factor = 0.1;
+  int established_age_frames = 30;
+};
+
+}  // namespace houghloc

@@ -1,0 +1,211 @@
+#include "localization/hypothesis_tracker.h"
+
+#include <gtest/gtest.h>
+
+#include "field_models/standard_fields.h"
+#include "tests/localization/tracking_scenario.h"
+
+namespace houghloc {
+namespace {
+
+GaussianPose gaussian(double x, double y, double theta, double sigma_m = 0.1,
+                      double sigma_rad = 0.1, double weight = 1.0) {
+  GaussianPose g;
+  g.mean = Pose2(x, y, theta);
+  g.covariance =
+      Eigen::Vector3d(sigma_m * sigma_m, sigma_m * sigma_m, sigma_rad * sigma_rad).asDiagonal();
+  g.weight = weight;
+  return g;
+}
+
+LocalizationHint hint(HintKind kind, std::vector<GaussianPose> poses = {}) {
+  LocalizationHint h;
+  h.kind = kind;
+  h.poses = std::move(poses);
+  return h;
+}
+
+void expectFinite(const HypothesisTracker& tracker) {
+  for (const TrackedHypothesis& h : tracker.hypotheses()) {
+    EXPECT_TRUE(h.pose.isFinite());
+    EXPECT_GE(h.pose.covariance.diagonal().minCoeff(), 0.0);
+  }
+}
+
+class HypothesisTrackerTest : public ::testing::Test {
+ protected:
+  FieldModel field_ = makeStandardField("spl");
+  std::shared_ptr<const FeatureIndex> index_ = std::make_shared<const FeatureIndex>(field_);
+  HypothesisTracker tracker_{index_, TrackerConfig{}};
+};
+
+TEST_F(HypothesisTrackerTest, StartsInitializingAndAsksForGlobalHypotheses) {
+  EXPECT_EQ(tracker_.status(), TrackerStatus::kInitializing);
+  EXPECT_TRUE(tracker_.needsGlobalHypotheses());
+  tracker_.update(0, Pose2(), GroundPoints{});
+  EXPECT_TRUE(tracker_.hypotheses().empty());
+}
+
+TEST_F(HypothesisTrackerTest, ResetAddMirrorOwnHalfAndUnknownHints) {
+  tracker_.applyHint(hint(HintKind::kResetTo, {gaussian(2.0, 1.0, 0.3)}));
+  ASSERT_EQ(tracker_.hypotheses().size(), 1u);
+  EXPECT_NEAR(tracker_.hypotheses()[0].pose.mean.x, 2.0, 1e-12);
+  EXPECT_NEAR(tracker_.hypotheses()[0].pose.weight, 1.0, 1e-12);
+  EXPECT_FALSE(tracker_.needsGlobalHypotheses());
+
+  tracker_.applyHint(hint(HintKind::kAdd, {gaussian(-1.0, 0.0, 0.0)}));
+  ASSERT_EQ(tracker_.hypotheses().size(), 2u);
+  EXPECT_NEAR(tracker_.hypotheses()[0].pose.weight, 0.5, 1e-12);  // hint_add_share
+
+  // OWN_HALF: (2, 1, 0.3) lies in the opponent half; its mirror (-2, -1, 0.3 + pi) replaces it.
+  tracker_.applyHint(hint(HintKind::kOwnHalf));
+  ASSERT_EQ(tracker_.hypotheses().size(), 2u);
+  for (const auto& h : tracker_.hypotheses()) EXPECT_LE(h.pose.mean.x, 0.0);
+  bool found = false;
+  for (const auto& h : tracker_.hypotheses()) {
+    found |= std::abs(h.pose.mean.x + 2.0) < 1e-9 && std::abs(h.pose.mean.y + 1.0) < 1e-9 &&
+             std::abs(angleDifference(h.pose.mean.theta, 0.3 + M_PI)) < 1e-9;
+  }
+  EXPECT_TRUE(found);
+
+  tracker_.applyHint(hint(HintKind::kMirror));
+  for (const auto& h : tracker_.hypotheses()) EXPECT_GE(h.pose.mean.x, 0.0);
+
+  tracker_.applyHint(hint(HintKind::kUnknown));
+  EXPECT_TRUE(tracker_.hypotheses().empty());
+  EXPECT_TRUE(tracker_.needsGlobalHypotheses());
+  EXPECT_EQ(tracker_.status(), TrackerStatus::kInitializing);
+}
+
+TEST_F(HypothesisTrackerTest, MirrorPairStaysAmbiguousUntilOwnHalfHint) {
+  const Pose2 truth(-2.0, 1.0, 0.4);
+  tracker_.applyHint(hint(HintKind::kResetTo, {gaussian(truth.x, truth.y, truth.theta),
+                                               mirrored(gaussian(truth.x, truth.y, truth.theta))}));
+  testing::ScenarioConfig view;
+  for (int k = 0; k < 10; ++k) {
+    tracker_.update(k * 33000, Pose2(), testing::samplePoints(field_, truth, 0.0, view, k));
+  }
+  ASSERT_EQ(tracker_.hypotheses().size(), 2u);
+  EXPECT_TRUE(tracker_.topHypothesesMirrorAmbiguous());
+  EXPECT_EQ(tracker_.status(), TrackerStatus::kAmbiguous);
+  tracker_.applyHint(hint(HintKind::kOwnHalf));
+  ASSERT_EQ(tracker_.hypotheses().size(), 1u);
+  EXPECT_EQ(tracker_.status(), TrackerStatus::kTracking);
+  EXPECT_NEAR(tracker_.hypotheses()[0].pose.mean.x, truth.x, 0.03);
+  EXPECT_NEAR(tracker_.hypotheses()[0].pose.mean.y, truth.y, 0.03);
+}
+
+TEST_F(HypothesisTrackerTest, WrongHypothesisLosesWeightAndIsPruned) {
+  const Pose2 truth(-2.0, 1.0, 0.4);
+  tracker_.applyHint(hint(HintKind::kResetTo,
+                          {gaussian(truth.x, truth.y, truth.theta), gaussian(1.0, -1.5, 2.0)}));
+  testing::ScenarioConfig view;
+  for (int k = 0; k < 5; ++k) {
+    tracker_.update(k * 33000, Pose2(), testing::samplePoints(field_, truth, 0.0, view, k));
+  }
+  ASSERT_EQ(tracker_.hypotheses().size(), 1u);
+  EXPECT_NEAR(tracker_.hypotheses()[0].pose.mean.x, truth.x, 0.03);
+  EXPECT_EQ(tracker_.status(), TrackerStatus::kTracking);
+}
+
+TEST_F(HypothesisTrackerTest, OdometryJumpNanAndBackwardTimeNeverGiveNan) {
+  tracker_.applyHint(hint(HintKind::kResetTo, {gaussian(-1.0, 0.0, 0.0, 0.02, 0.02)}));
+  tracker_.update(0, Pose2(0.0, 0.0, 0.0), GroundPoints{});
+  tracker_.update(33000, Pose2(0.01, 0.0, 0.0), GroundPoints{});
+  EXPECT_NEAR(tracker_.hypotheses()[0].pose.mean.x, -0.99, 1e-9);
+  const double var_before = tracker_.hypotheses()[0].pose.covariance(0, 0);
+  tracker_.update(66000, Pose2(1e6, -3e5, 2.0), GroundPoints{});  // jump: not applied
+  EXPECT_TRUE(tracker_.lastStats().odometry_jump);
+  EXPECT_NEAR(tracker_.hypotheses()[0].pose.mean.x, -0.99, 1e-9);
+  EXPECT_GT(tracker_.hypotheses()[0].pose.covariance(0, 0), var_before);
+  EXPECT_TRUE(tracker_.needsGlobalHypotheses());
+  const double nan = std::nan("");
+  tracker_.update(99000, Pose2(nan, nan, nan), GroundPoints{});
+  tracker_.update(-5000000, Pose2(1e6, -3e5, 2.0), GroundPoints{});  // time backwards
+  EXPECT_TRUE(tracker_.lastStats().time_backwards);
+  tracker_.update(std::numeric_limits<std::int64_t>::max() / 2, std::nullopt, GroundPoints{});
+  GroundPoints bad;
+  bad.points.push_back(GroundPoint{Eigen::Vector2d(nan, 1.0)});
+  bad.points.push_back(GroundPoint{Eigen::Vector2d(1e300, -1e300)});
+  tracker_.update(std::numeric_limits<std::int64_t>::max() / 2 + 1, Pose2(), bad);
+  ASSERT_FALSE(tracker_.hypotheses().empty());
+  expectFinite(tracker_);
+  EXPECT_EQ(tracker_.status(), TrackerStatus::kLost);  // covariance blew up with the clock gap
+}
+
+TEST_F(HypothesisTrackerTest, TenSecondsWithoutPoints) {
+  testing::ScenarioConfig config;
+  config.frames = 330;
+  const auto frames = testing::makeScenario(field_, config);
+  const GaussianPose start = gaussian(frames[0].field_T_robot.x, frames[0].field_T_robot.y,
+                                      frames[0].field_T_robot.theta, 0.02, 0.02);
+  // With odometry: uncertainty grows with the distance walked, the tracker keeps going.
+  tracker_.applyHint(hint(HintKind::kResetTo, {start}));
+  for (const auto& f : frames) tracker_.update(f.t_us, f.odometry, GroundPoints{});
+  expectFinite(tracker_);
+  EXPECT_NEAR(tracker_.lastStats().seconds_without_points, 10.97, 0.01);
+  const Eigen::Matrix3d& cov = tracker_.hypotheses()[0].pose.covariance;
+  EXPECT_GT(cov(0, 0) + cov(1, 1), 0.05 * 0.05);
+  const double error =
+      (tracker_.hypotheses()[0].pose.mean.translation() - frames.back().field_T_robot.translation())
+          .norm();
+  EXPECT_LT(error, 3.0 * std::sqrt(cov(0, 0) + cov(1, 1)));  // honest covariance
+  // Without odometry either: LOST and asking for global hypotheses.
+  HypothesisTracker blind(index_, TrackerConfig{});
+  blind.applyHint(hint(HintKind::kResetTo, {start}));
+  for (const auto& f : frames) blind.update(f.t_us, std::nullopt, GroundPoints{});
+  expectFinite(blind);
+  EXPECT_EQ(blind.status(), TrackerStatus::kLost);
+  EXPECT_TRUE(blind.needsGlobalHypotheses());
+}
+
+TEST_F(HypothesisTrackerTest, AsksForGlobalAtLowRateAndWhenObservationsDisagree) {
+  const Pose2 truth(-2.0, 1.0, 0.4);
+  tracker_.applyHint(
+      hint(HintKind::kResetTo, {gaussian(truth.x, truth.y, truth.theta, 0.02, 0.02)}));
+  testing::ScenarioConfig view;
+  int k = 0;
+  for (; k < 30; ++k) {
+    tracker_.update(k * 33333, Pose2(), testing::samplePoints(field_, truth, 0.0, view, k));
+    EXPECT_FALSE(tracker_.needsGlobalHypotheses()) << k;
+  }
+  for (; k < 95; ++k) {
+    tracker_.update(k * 33333, Pose2(), testing::samplePoints(field_, truth, 0.0, view, k));
+  }
+  EXPECT_TRUE(tracker_.needsGlobalHypotheses());  // periodic_global_s = 3 s passed
+  tracker_.injectHypotheses({gaussian(truth.x, truth.y, truth.theta)});
+  EXPECT_FALSE(tracker_.needsGlobalHypotheses());
+  // Kidnap: the same odometry, a different view. Disagreement for disagree_frames frames.
+  const Pose2 elsewhere(2.5, -1.5, 2.5);
+  for (int j = 0; j < 5; ++j, ++k) {
+    tracker_.update(k * 33333, Pose2(), testing::samplePoints(field_, elsewhere, 0.0, view, k));
+  }
+  EXPECT_TRUE(tracker_.needsGlobalHypotheses());
+  EXPECT_EQ(tracker_.status(), TrackerStatus::kLost);
+  expectFinite(tracker_);
+}
+
+TEST_F(HypothesisTrackerTest, DeterministicForTheSameInput) {
+  testing::ScenarioConfig config;
+  config.frames = 60;
+  const auto frames = testing::makeScenario(field_, config);
+  auto run = [&]() {
+    HypothesisTracker t(index_, TrackerConfig{});
+    t.applyHint(hint(HintKind::kResetTo,
+                     {gaussian(frames[0].field_T_robot.x + 0.1, frames[0].field_T_robot.y,
+                               frames[0].field_T_robot.theta),
+                      gaussian(0.0, 0.0, 1.0)}));
+    for (const auto& f : frames) t.update(f.t_us, f.odometry, f.points);
+    return t.hypotheses();
+  };
+  const auto a = run(), b = run();
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].pose.mean.x, b[i].pose.mean.x);
+    EXPECT_EQ(a[i].pose.covariance, b[i].pose.covariance);
+    EXPECT_EQ(a[i].pose.weight, b[i].pose.weight);
+  }
+}
+
+}  // namespace
+}  // namespace houghloc

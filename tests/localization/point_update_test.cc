@@ -1,0 +1,121 @@
+#include "localization/point_update.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "field_models/field_distance.h"
+#include "field_models/standard_fields.h"
+#include "localization/feature_index.h"
+
+namespace houghloc {
+namespace {
+
+/// A map with one straight line y = 1 along x.
+FieldModel oneLine() {
+  FieldModel field;
+  field.field_length = 10.0;
+  field.field_width = 4.0;
+  field.segments.push_back({Eigen::Vector2d(-5.0, 1.0), Eigen::Vector2d(5.0, 1.0)});
+  return field;
+}
+
+GroundPoints pointsAt(const std::vector<Eigen::Vector2d>& ps) {
+  GroundPoints out;
+  for (const auto& p : ps) out.points.push_back(GroundPoint{p});
+  return out;
+}
+
+PointUpdateConfig linearConfig() {
+  PointUpdateConfig config;
+  config.huber_sigmas = 1e9;  // plain least squares: the hand computation is a Kalman update
+  return config;
+}
+
+TEST(PointUpdate, SingleLineConstraintMatchesKalmanUpdate) {
+  const FeatureIndex index(oneLine());
+  GaussianPose prior;
+  prior.covariance = Eigen::Vector3d(0.04, 0.04, 0.01).asDiagonal();
+  // The robot is really at y = -0.1: it sees the line 1.1 m to its left, 5 points at x = -2..2.
+  const GroundPoints points = pointsAt({{-2, 1.1}, {-1, 1.1}, {0, 1.1}, {1, 1.1}, {2, 1.1}});
+  const PointUpdateConfig config = linearConfig();
+  const PointUpdateResult r = updateWithGroundPoints(prior, points.points, index, config);
+  ASSERT_TRUE(r.corrected);
+  // Residual 0.1 m on each point, J = [0, 1, x_i]. y: Kalman with P = 0.04 against 5 points of
+  // variance s^2: y = -0.1 * P / (P + s^2 / 5); theta: information 1/0.01 + sum x_i^2 / s^2.
+  const double s2 = config.point_sigma_m * config.point_sigma_m;
+  EXPECT_NEAR(r.posterior.mean.y, -0.1 * 0.04 / (0.04 + s2 / 5.0), 1e-9);
+  EXPECT_NEAR(r.posterior.mean.x, 0.0, 1e-12);
+  EXPECT_NEAR(r.posterior.mean.theta, 0.0, 1e-12);
+  EXPECT_NEAR(r.posterior.covariance(1, 1), 1.0 / (1.0 / 0.04 + 5.0 / s2), 1e-12);
+  EXPECT_NEAR(r.posterior.covariance(2, 2), 1.0 / (1.0 / 0.01 + 10.0 / s2), 1e-12);
+  EXPECT_NEAR(r.posterior.covariance(0, 0), 0.04, 1e-12);  // along the line: prior only
+  EXPECT_EQ(r.num_associated, 5);
+}
+
+TEST(PointUpdate, GateRejectsPointsThePriorCannotExplain) {
+  const FeatureIndex index(oneLine());
+  const GroundPoints points = pointsAt({{-2, 1.3}, {-1, 1.3}, {0, 1.3}, {1, 1.3}, {2, 1.3}});
+  GaussianPose sharp;
+  sharp.covariance = Eigen::Matrix3d::Identity() * 1e-4;  // 1 cm: 0.3 m is 9 sigma away
+  const PointUpdateResult rejected =
+      updateWithGroundPoints(sharp, points.points, index, linearConfig());
+  EXPECT_EQ(rejected.num_associated, 0);
+  EXPECT_FALSE(rejected.corrected);
+  EXPECT_EQ(rejected.posterior.mean.y, 0.0);
+  GaussianPose wide;
+  wide.covariance = Eigen::Vector3d(0.04, 0.04, 0.01).asDiagonal();  // 0.3 m is 1.5 sigma
+  const PointUpdateResult accepted =
+      updateWithGroundPoints(wide, points.points, index, linearConfig());
+  EXPECT_EQ(accepted.num_associated, 5);
+  EXPECT_LT(accepted.posterior.mean.y, -0.25);
+}
+
+TEST(PointUpdate, IteratedUpdateCorrectsTwentyCentimetresInOneFrame) {
+  const FieldModel field = makeStandardField("spl");
+  const FeatureIndex index(field);
+  // Truth at the penalty area corner region, looking at the goal: many directions in view.
+  const Pose2 truth(-3.0, 1.0, M_PI);
+  GroundPoints points;
+  for (double t = 0.0; t <= 1.0; t += 0.01) {
+    for (const Segment2& s : field.segments) {
+      const Eigen::Vector2d p = truth.inverse().transform(s.a + t * (s.b - s.a));
+      if (p.x() > 0.3 && p.norm() < 3.5) points.points.push_back(GroundPoint{p});
+    }
+  }
+  ASSERT_GT(points.size(), 100u);
+  GaussianPose prior;
+  prior.mean = Pose2(truth.x + 0.14, truth.y - 0.14, truth.theta + 0.05);  // 20 cm, 3 deg off
+  prior.covariance = Eigen::Vector3d(0.04, 0.04, 0.01).asDiagonal();
+  const PointUpdateResult r = updateWithGroundPoints(prior, points.points, index, {});
+  EXPECT_NEAR(r.posterior.mean.x, truth.x, 0.005);
+  EXPECT_NEAR(r.posterior.mean.y, truth.y, 0.005);
+  EXPECT_NEAR(angleDifference(r.posterior.mean.theta, truth.theta), 0.0, 0.003);
+  EXPECT_GT(r.inlier_share, 0.95);
+  EXPECT_TRUE(r.posterior.covariance.allFinite());
+}
+
+class FeatureIndexExact : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FeatureIndexExact, MatchesBruteForceNearestFeature) {
+  const FieldModel field = makeStandardField(GetParam());
+  const FeatureIndex index(field);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> ux(-field.outerHalfLength(), field.outerHalfLength());
+  std::uniform_real_distribution<double> uy(-field.outerHalfWidth(), field.outerHalfWidth());
+  for (int i = 0; i < 20000; ++i) {
+    const Eigen::Vector2d p(ux(rng), uy(rng));
+    Association a;
+    ASSERT_TRUE(index.associate(p, &a));
+    EXPECT_NEAR(a.distance_m, nearestFeature(field, p).distance_m, 1e-9) << p.transpose();
+  }
+  Association a;
+  EXPECT_FALSE(index.associate(Eigen::Vector2d(100.0, 0.0), &a));
+  EXPECT_FALSE(index.associate(Eigen::Vector2d(std::nan(""), 0.0), &a));
+}
+
+INSTANTIATE_TEST_SUITE_P(Fields, FeatureIndexExact,
+                         ::testing::Values("spl", "spl2019", "kid", "adult", "msl"));
+
+}  // namespace
+}  // namespace houghloc

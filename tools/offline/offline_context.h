@@ -1,0 +1,27 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "field_models/field_model.h"
+#include "tools/offline/offline_options.h"
+#include "tools/recording/recording.h"
+#include "vision/vision_pipeline.h"
+
+namespace houghloc {
+
+/// Everything a mode needs, loaded and checked before any frame runs.
+struct OfflineContext {
+  OfflineOptions options;
+  Recording recording;
+  std::optional<FieldModel> field;  ///< --field, --standard, or FOLDER/field.yaml
+  VisionConfig vision_config;       ///< defaults, the --config file, then the map's line width
+  std::string out_dir;              ///< exists and is writable
+  int first_frame = 0, end_frame = 0;
+};
+
+/// Reads the folder, the field and the config and prepares the output folder. Throws
+/// std::runtime_error (or RecordingError) whose message names the file (and line or key) at fault.
+OfflineContext loadOfflineContext(const OfflineOptions& options);
+
+}  // namespace houghloc

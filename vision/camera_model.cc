@@ -1,0 +1,209 @@
+#include "vision/camera_model.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace houghloc {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// camera_R_optical: optical (x right, y down, z forward) -> camera body (x forward, y left,
+/// z up), i.e. p_cam = (z_o, -x_o, -y_o) (DESIGN §3).
+Eigen::Matrix3d cameraFromOptical() {
+  Eigen::Matrix3d m;
+  m << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+  return m;
+}
+
+bool allFinite(const Eigen::Vector3d& v) {
+  return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+
+}  // namespace
+
+void validateCameraIntrinsics(const CameraIntrinsics& in) {
+  if (in.image_width <= 0 || in.image_height <= 0) {
+    throw std::invalid_argument("image size must be positive, got " +
+                                std::to_string(in.image_width) + "x" +
+                                std::to_string(in.image_height));
+  }
+  const cv::Matx33d& k = in.camera_matrix;
+  for (int i = 0; i < 9; ++i) {
+    if (!std::isfinite(k.val[i])) throw std::invalid_argument("camera_matrix is not finite");
+  }
+  if (!(k(0, 0) > 0.0) || !(k(1, 1) > 0.0)) {
+    throw std::invalid_argument("camera_matrix focal lengths fx, fy must be positive");
+  }
+  if (k(1, 0) != 0.0 || k(2, 0) != 0.0 || k(2, 1) != 0.0 || k(2, 2) != 1.0) {
+    throw std::invalid_argument("camera_matrix must be [fx s cx; 0 fy cy; 0 0 1]");
+  }
+  LensDistortion(in.model, in.distortion);  // throws for invalid coefficients
+}
+
+CameraModel::CameraModel(const CameraIntrinsics& intrinsics, const Pose3& robot_T_camera,
+                         const CameraModelConfig& config)
+    : intrinsics_(intrinsics), config_(config) {
+  validateCameraIntrinsics(intrinsics_);
+  lens_ = LensDistortion(intrinsics_.model, intrinsics_.distortion);
+  limitFieldOfView();
+  setPose(robot_T_camera);
+}
+
+void CameraModel::limitFieldOfView() {
+  // The widest ray of the image leaves through a corner or, for unusual distortion, an edge's
+  // middle; the model stays valid a margin beyond it.
+  const cv::Matx33d& k = intrinsics_.camera_matrix;
+  const double right = width() - 0.5, bottom = height() - 0.5;
+  const double us[] = {-0.5, 0.5 * (width() - 1), right};
+  const double vs[] = {-0.5, 0.5 * (height() - 1), bottom};
+  double widest = 0.0;
+  for (double u : us) {
+    for (double v : vs) {
+      const auto ray = lens_.undistort({(u - k(0, 2)) / k(0, 0), (v - k(1, 2)) / k(1, 1)});
+      if (!ray) return;  // part of the image is already outside the model's valid cone
+      widest = std::max(widest, std::acos(std::clamp(ray->z(), -1.0, 1.0)));
+    }
+  }
+  lens_.limitFieldAngle(widest + config_.field_of_view_margin_rad);
+}
+
+void CameraModel::setPose(const Pose3& robot_T_camera) {
+  robot_T_camera_ = robot_T_camera;
+  robot_R_optical_ = robot_T_camera_.rotation() * cameraFromOptical();
+  computeHorizon();
+}
+
+bool CameraModel::inImage(const Eigen::Vector2d& pixel) const {
+  return pixel.x() >= 0.0 && pixel.x() <= width() - 1.0 && pixel.y() >= 0.0 &&
+         pixel.y() <= height() - 1.0;
+}
+
+std::optional<Eigen::Vector2d> CameraModel::project(const Eigen::Vector3d& p_robot) const {
+  if (!allFinite(p_robot)) return std::nullopt;
+  const Eigen::Vector3d p_optical =
+      robot_R_optical_.transpose() * (p_robot - robot_T_camera_.translation());
+  const auto normalized = lens_.distort(p_optical);
+  if (!normalized) return std::nullopt;
+  const cv::Matx33d& k = intrinsics_.camera_matrix;
+  return Eigen::Vector2d(k(0, 0) * normalized->x() + k(0, 2), k(1, 1) * normalized->y() + k(1, 2));
+}
+
+Eigen::Vector3d CameraModel::pixelRay(double u, double v) const {
+  const cv::Matx33d& k = intrinsics_.camera_matrix;
+  const Eigen::Vector2d normalized((u - k(0, 2)) / k(0, 0), (v - k(1, 2)) / k(1, 1));
+  const auto ray_optical = lens_.undistort(normalized);
+  if (!ray_optical) return Eigen::Vector3d::Constant(kNaN);
+  return robot_R_optical_ * *ray_optical;
+}
+
+std::optional<Eigen::Vector3d> CameraModel::groundHit(double u, double v) const {
+  const Eigen::Vector3d origin = robot_T_camera_.translation();
+  const Eigen::Vector3d ray = pixelRay(u, v);
+  if (!allFinite(ray) || !allFinite(origin) || origin.z() <= 0.0 || ray.z() >= 0.0) {
+    return std::nullopt;
+  }
+  const Eigen::Vector3d hit = origin + (-origin.z() / ray.z()) * ray;
+  if (!allFinite(hit)) return std::nullopt;
+  return Eigen::Vector3d(hit.x(), hit.y(), 0.0);
+}
+
+std::optional<Eigen::Vector2d> CameraModel::pixelToGround(double u, double v) const {
+  const Eigen::Vector3d ray = pixelRay(u, v);
+  // ray is a unit vector, so -ray.z() is the sine of the depression below the horizon.
+  if (!allFinite(ray) || -ray.z() < std::sin(config_.min_depression_rad)) return std::nullopt;
+  const auto hit = groundHit(u, v);
+  if (!hit || hit->head<2>().norm() > config_.max_ground_range_m) return std::nullopt;
+  return hit->head<2>();
+}
+
+// The horizon is where the image of the ground plane's points at infinity lies: the projections
+// of the horizontal directions (cos a, sin a, 0). Sampling a and solving u(a) = column per
+// column with the Illinois method costs a few forward projections per column, no
+// undistortion, so setPose() stays cheap enough for per-frame head motion.
+void CameraModel::computeHorizon() {
+  horizon_rows_.assign(width(), kNaN);
+  if (!robot_T_camera_.isFinite()) {
+    horizon_rows_.assign(width(), kInf);
+    return;
+  }
+  const cv::Matx33d& k = intrinsics_.camera_matrix;
+  auto pixelOf = [&](double a) -> std::optional<Eigen::Vector2d> {
+    const Eigen::Vector3d d_optical =
+        robot_R_optical_.transpose() * Eigen::Vector3d(std::cos(a), std::sin(a), 0.0);
+    const auto n = lens_.distort(d_optical);
+    if (!n) return std::nullopt;
+    return Eigen::Vector2d(k(0, 0) * n->x() + k(0, 2), k(1, 1) * n->y() + k(1, 2));
+  };
+  const int samples = 2048;
+  std::vector<std::optional<Eigen::Vector2d>> pixels(samples + 1);
+  for (int i = 0; i <= samples; ++i) pixels[i] = pixelOf(-kPi + 2.0 * kPi * i / samples);
+  for (int i = 0; i < samples; ++i) {
+    if (!pixels[i] || !pixels[i + 1]) continue;
+    const double u0 = pixels[i]->x(), u1 = pixels[i + 1]->x();
+    const int first = std::max(0, static_cast<int>(std::ceil(std::min(u0, u1))));
+    const int last = std::min(width() - 1, static_cast<int>(std::floor(std::max(u0, u1))));
+    for (int column = first; column <= last; ++column) {
+      if (!std::isnan(horizon_rows_[column])) continue;
+      double a_lo = -kPi + 2.0 * kPi * i / samples, f_lo = u0 - column;
+      double a_hi = -kPi + 2.0 * kPi * (i + 1) / samples, f_hi = u1 - column;
+      double v = f_lo == 0.0 ? pixels[i]->y() : pixels[i + 1]->y();
+      int side = 0;
+      for (int iteration = 0; iteration < 30 && f_lo != 0.0 && f_hi != 0.0; ++iteration) {
+        const double a = (a_lo * f_hi - a_hi * f_lo) / (f_hi - f_lo);
+        const auto p = pixelOf(a);
+        if (!p) break;
+        const double f = p->x() - column;
+        v = p->y();
+        if (std::abs(f) < 1e-7) break;
+        if ((f < 0.0) == (f_lo < 0.0)) {
+          a_lo = a, f_lo = f;
+          if (side == -1) f_hi *= 0.5;  // Illinois: halve the stale end to keep convergence fast
+          side = -1;
+        } else {
+          a_hi = a, f_hi = f;
+          if (side == 1) f_lo *= 0.5;
+          side = 1;
+        }
+      }
+      horizon_rows_[column] = v;
+    }
+  }
+  // Columns the horizon misses: all ground or no ground, judged by the column's centre ray.
+  for (int column = 0; column < width(); ++column) {
+    if (!std::isnan(horizon_rows_[column])) continue;
+    const Eigen::Vector3d ray = pixelRay(column, 0.5 * (height() - 1));
+    horizon_rows_[column] = allFinite(ray) && ray.z() < 0.0 ? -kInf : kInf;
+  }
+}
+
+std::optional<Eigen::Vector2d> CameraModel::expectedLineWidthPx(double u, double v,
+                                                                double line_width_m) const {
+  if (!std::isfinite(line_width_m) || line_width_m < 0.0) return std::nullopt;
+  const auto center = groundHit(u, v);
+  if (!center) return std::nullopt;
+  // Direction on the ground of the scanline through (u, v); the line crosses it at right angles,
+  // so its two edges lie half a width either side of the centre along that direction.
+  auto extentAlong = [&](double du, double dv) -> std::optional<double> {
+    const auto ahead = groundHit(u + du, v + dv);
+    const auto behind = groundHit(u - du, v - dv);
+    if (!ahead || !behind) return std::nullopt;
+    const Eigen::Vector3d direction = (*ahead - *behind).normalized();
+    const auto edge1 = project(*center + 0.5 * line_width_m * direction);
+    const auto edge2 = project(*center - 0.5 * line_width_m * direction);
+    if (!edge1 || !edge2) return std::nullopt;
+    return (*edge1 - *edge2).norm();
+  };
+  const auto along_row = extentAlong(0.5, 0.0);
+  const auto along_column = extentAlong(0.0, 0.5);
+  if (!along_row || !along_column) return std::nullopt;
+  return Eigen::Vector2d(*along_row, *along_column);
+}
+
+}  // namespace houghloc

@@ -1,0 +1,115 @@
+#include "vision/field_boundary.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace houghloc {
+namespace {
+
+/// Top of the first run of min_green_run green samples in column u, refined to the pixel;
+/// negative when the column has no such run.
+float greenTop(const cv::Mat& bgr, const FieldColor& color, int u, int start_row,
+               const FieldBoundaryConfig& config) {
+  int run = 0;
+  int run_start = -1;
+  for (int v = std::max(0, start_row); v < bgr.rows; v += config.row_step_px) {
+    if (color.isField(bgr.ptr<uchar>(v) + 3 * u)) {
+      if (run++ == 0) run_start = v;
+      if (run >= config.min_green_run) break;
+    } else {
+      run = 0;
+    }
+  }
+  if (run < config.min_green_run) return -1.f;
+  int top = run_start;
+  while (top > std::max(0, start_row) && top > run_start - config.row_step_px + 1 &&
+         color.isField(bgr.ptr<uchar>(top - 1) + 3 * u)) {
+    --top;
+  }
+  return static_cast<float>(top);
+}
+
+double cross(const Eigen::Vector2f& o, const Eigen::Vector2f& a, const Eigen::Vector2f& b) {
+  return static_cast<double>(a.x() - o.x()) * (b.y() - o.y()) -
+         static_cast<double>(a.y() - o.y()) * (b.x() - o.x());
+}
+
+/// Andrew's monotone chain: the chain that every point lies on or below (larger v) in image
+/// coordinates. Points are sorted by u.
+std::vector<Eigen::Vector2f> upperHull(const std::vector<Eigen::Vector2f>& points) {
+  std::vector<Eigen::Vector2f> hull;
+  for (const Eigen::Vector2f& p : points) {
+    while (hull.size() >= 2 && cross(hull[hull.size() - 2], hull.back(), p) <= 0) hull.pop_back();
+    hull.push_back(p);
+  }
+  return hull;
+}
+
+/// Drops tops that stick out far above both neighbours; returns whether any was dropped.
+bool dropSpikes(const std::vector<Eigen::Vector2f>& hull, std::vector<Eigen::Vector2f>* tops,
+                double max_spike_px) {
+  bool dropped = false;
+  for (const Eigen::Vector2f& vertex : hull) {
+    auto it = std::find_if(tops->begin(), tops->end(),
+                           [&](const Eigen::Vector2f& t) { return t.x() == vertex.x(); });
+    if (it == tops->end()) continue;
+    const bool has_left = it != tops->begin(), has_right = it + 1 != tops->end();
+    if (!has_left && !has_right) continue;
+    const float left = has_left ? (it - 1)->y() : (it + 1)->y();
+    const float right = has_right ? (it + 1)->y() : (it - 1)->y();
+    if (std::min(left, right) - it->y() > max_spike_px) {
+      tops->erase(it);
+      dropped = true;
+    }
+  }
+  return dropped;
+}
+
+}  // namespace
+
+FieldBoundary detectFieldBoundary(const cv::Mat& bgr, const FieldColor& color,
+                                  const std::vector<int>& start_rows,
+                                  const FieldBoundaryConfig& config) {
+  FieldBoundary boundary;
+  boundary.rows.assign(static_cast<size_t>(bgr.cols), static_cast<float>(bgr.rows));
+  if (!color.valid) return boundary;
+  const int step = std::max(1, config.column_step_px);
+  for (int u = 0; u < bgr.cols; u += step) {
+    const int col = std::min(u, bgr.cols - 1);
+    const float top = greenTop(bgr, color, col, start_rows[static_cast<size_t>(col)], config);
+    if (top >= 0.f) boundary.green_tops.emplace_back(static_cast<float>(col), top);
+  }
+  if (bgr.cols - 1 > (bgr.cols - 1) / step * step) {
+    const int col = bgr.cols - 1;
+    const float top = greenTop(bgr, color, col, start_rows[static_cast<size_t>(col)], config);
+    if (top >= 0.f) boundary.green_tops.emplace_back(static_cast<float>(col), top);
+  }
+  std::vector<Eigen::Vector2f> tops = boundary.green_tops;
+  if (tops.size() < 2) return boundary;
+  boundary.hull = upperHull(tops);
+  for (int pass = 0; pass < config.max_spike_passes; ++pass) {
+    if (!dropSpikes(boundary.hull, &tops, config.max_spike_px) || tops.size() < 2) break;
+    boundary.hull = upperHull(tops);
+  }
+  // Interpolate between hull vertices; extend the outer edges to the image border.
+  const std::vector<Eigen::Vector2f>& hull = boundary.hull;
+  for (int u = 0; u < bgr.cols; ++u) {
+    size_t i = 1;
+    while (i + 1 < hull.size() && hull[i].x() < u) ++i;
+    const Eigen::Vector2f& a = hull[i - 1];
+    const Eigen::Vector2f& b = hull[i];
+    float v = a.y();
+    if (hull.size() >= 2 && b.x() != a.x())
+      v = a.y() + (b.y() - a.y()) * (u - a.x()) / (b.x() - a.x());
+    // Outside the sampled range keep it flat: the extrapolated slope can shoot off.
+    if (u < hull.front().x()) v = hull.front().y();
+    if (u > hull.back().x()) v = hull.back().y();
+    boundary.rows[static_cast<size_t>(u)] =
+        std::clamp(std::max(v, static_cast<float>(start_rows[static_cast<size_t>(u)])), 0.f,
+                   static_cast<float>(bgr.rows));
+  }
+  boundary.found = true;
+  return boundary;
+}
+
+}  // namespace houghloc

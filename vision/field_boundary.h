@@ -1,0 +1,40 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "vision/field_color.h"
+
+namespace houghloc {
+
+struct FieldBoundaryConfig {
+  int column_step_px = 8;    ///< columns sampled for the top of the green region
+  int row_step_px = 4;       ///< row spacing of the samples along a column
+  int min_green_run = 3;     ///< consecutive green samples that mark the start of the field
+  double max_spike_px = 24;  ///< a hull vertex this far above both neighbouring columns' tops
+                             ///< (green far beyond the field, e.g. a poster) is dropped
+  int max_spike_passes = 4;  ///< hull recomputations for dropped spikes
+};
+
+/// Where the field ends in the image: per column the first row (from the top) of the field.
+/// Rows at or below it are field (or things standing on it); rows above are beyond the border.
+struct FieldBoundary {
+  bool found = false;
+  std::vector<float> rows;                  ///< one per column; image height when no field
+  std::vector<Eigen::Vector2f> green_tops;  ///< sampled top of the green per column (u, v)
+  std::vector<Eigen::Vector2f> hull;        ///< fitted boundary vertices (u, v), left to right
+
+  float rowAt(int u) const { return rows[static_cast<size_t>(u)]; }
+};
+
+/// Finds the top of the green in sparse columns below the start rows (horizon) and fits the
+/// upper convex hull of those tops. The field seen from inside is convex in the image (up to
+/// lens distortion), and robots or other occluders only push single tops down, so the hull
+/// ignores them; isolated tops far above their neighbours are dropped as green clutter beyond
+/// the field.
+FieldBoundary detectFieldBoundary(const cv::Mat& bgr, const FieldColor& color,
+                                  const std::vector<int>& start_rows,
+                                  const FieldBoundaryConfig& config = {});
+
+}  // namespace houghloc

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+namespace houghloc {
+
+struct FieldColorConfig {
+  int sample_step_px = 12;           ///< grid spacing of the colour samples below the horizon
+  int histogram_bins = 48;           ///< per chromaticity axis (r and g in [0, 1])
+  int min_luma = 20;                 ///< darker samples have unreliable chromaticity (0-255)
+  double min_chroma_radius = 0.03;   ///< field chromaticity radius is at least this
+  double max_chroma_radius = 0.09;   ///< ... and at most this
+  double radius_sigmas = 3.5;        ///< radius = this many robust sigmas of the field samples
+  double min_field_share = 0.1;      ///< below this share of field samples no field is found
+  double shadow_luma_ratio = 0.25;   ///< field pixels may be this much darker than the median
+  double white_chroma_ratio = 0.55;  ///< "low saturation": chroma distance to grey below this
+                                     ///< share of the field colour's distance to grey
+};
+
+/// The turf colour of one frame as normalised chromaticity (r, g) = (R, G) / (R + G + B), which
+/// does not change with brightness: lighting gradients, shadows and exposure only scale R, G, B.
+/// Colour temperature moves it, which the per-frame estimate follows.
+struct FieldColor {
+  bool valid = false;
+  float r = 0.f, g = 0.f;    ///< chromaticity centre of the field
+  float radius = 0.f;        ///< accepted chromaticity distance from the centre
+  float luma_median = 0.f;   ///< of the field samples, 0-255
+  float luma_sigma = 0.f;    ///< robust spread (turf texture and noise), 0-255
+  float min_luma = 0.f;      ///< darker pixels are not field (shadow limit)
+  float white_radius = 0.f;  ///< chromaticity distance to grey below which a pixel is "white"
+  float field_share = 0.f;   ///< share of samples below the horizon that are field
+
+  /// Luma used throughout the scanlines: (B + 2G + R) / 4, 0-255.
+  static int luma(const uchar* bgr) { return (bgr[0] + 2 * bgr[1] + bgr[2]) >> 2; }
+
+  bool isField(const uchar* bgr) const {
+    const float sum = static_cast<float>(bgr[0] + bgr[1] + bgr[2]);
+    if (luma(bgr) < min_luma) return false;
+    const float dr = bgr[2] - r * sum, dg = bgr[1] - g * sum;
+    return dr * dr + dg * dg < radius * radius * sum * sum;
+  }
+  bool isWhitish(const uchar* bgr) const {
+    const float sum = static_cast<float>(bgr[0] + bgr[1] + bgr[2]);
+    const float dr = bgr[2] - sum / 3.f, dg = bgr[1] - sum / 3.f;
+    return dr * dr + dg * dg < white_radius * white_radius * sum * sum;
+  }
+};
+
+/// Estimates the field colour from a sparse grid of samples below the given start rows (one per
+/// column, e.g. the horizon): the densest chromaticity cluster, preferring green ones, so no
+/// colour thresholds need tuning on a new field or under new light.
+FieldColor estimateFieldColor(const cv::Mat& bgr, const std::vector<int>& start_rows,
+                              const FieldColorConfig& config = {});
+
+}  // namespace houghloc

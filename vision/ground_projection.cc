@@ -1,0 +1,114 @@
+#include "vision/ground_projection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+namespace houghloc {
+
+std::vector<SpotRay> spotRays(const CameraModel& camera, const std::vector<LineSpot>& spots) {
+  const Eigen::Matrix3d camera_R_robot = camera.pose().rotation().transpose();
+  std::vector<SpotRay> rays;
+  rays.reserve(spots.size());
+  for (const LineSpot& spot : spots) {
+    const Eigen::Vector3d ray_robot = camera.pixelRay(spot.pixel.x(), spot.pixel.y());
+    if (!ray_robot.allFinite()) continue;
+    rays.push_back({camera_R_robot * ray_robot, spot.pixel, spot.vertical_scan});
+  }
+  return rays;
+}
+
+std::optional<Eigen::Vector2d> rayToGround(const Eigen::Vector3d& ray_camera,
+                                           const Pose3& robot_T_camera,
+                                           const GroundProjectionConfig& config) {
+  const Eigen::Vector3d ray = robot_T_camera.rotation() * ray_camera;
+  const double norm = ray.norm();
+  if (robot_T_camera.z <= 0.0 || !(norm > 0.0)) return std::nullopt;
+  if (-ray.z() / norm < std::sin(config.min_depression_rad)) return std::nullopt;
+  const double s = robot_T_camera.z / -ray.z();
+  const Eigen::Vector2d p(robot_T_camera.x + s * ray.x(), robot_T_camera.y + s * ray.y());
+  if (p.norm() > config.max_range_m) return std::nullopt;
+  return p;
+}
+
+std::vector<GroundPoint> projectSpots(const std::vector<SpotRay>& rays, const Pose3& robot_T_camera,
+                                      int camera_id, const GroundProjectionConfig& config,
+                                      ProjectionStats* stats) {
+  std::vector<GroundPoint> points;
+  points.reserve(rays.size());
+  std::unordered_set<std::int64_t> cells;
+  const double cell = std::max(1e-3, config.thin_cell_m);
+  for (const SpotRay& ray : rays) {
+    const auto p = rayToGround(ray.ray_camera, robot_T_camera, config);
+    if (!p) {
+      if (stats) ++stats->dropped_range;
+      continue;
+    }
+    const std::int64_t cx = static_cast<std::int64_t>(std::floor(p->x() / cell));
+    const std::int64_t cy = static_cast<std::int64_t>(std::floor(p->y() / cell));
+    if (!cells.insert((cx << 32) ^ (cy & 0xffffffff)).second) {
+      if (stats) ++stats->thinned;
+      continue;
+    }
+    GroundPoint point;
+    point.p_robot = *p;
+    const double r = p->norm() / config.weight_range_m;
+    point.weight = 1.0 / (1.0 + r * r);
+    point.pixel = ray.pixel;
+    point.camera_id = camera_id;
+    points.push_back(point);
+  }
+  return points;
+}
+
+namespace {
+
+/// Ground point of a pixel, or where its ray's azimuth meets the range limit when the pixel
+/// sees farther (or above the horizon).
+std::optional<Eigen::Vector2d> groundOrLimit(const CameraModel& camera, double u, double v,
+                                             const GroundProjectionConfig& config) {
+  const Eigen::Vector3d ray = camera.pixelRay(u, v);
+  if (!ray.allFinite()) return std::nullopt;
+  const Pose3& pose = camera.pose();
+  const Eigen::Vector3d ray_camera = pose.rotation().transpose() * ray;
+  if (const auto p = rayToGround(ray_camera, pose, config)) return p;
+  const Eigen::Vector2d direction(ray.x(), ray.y());
+  if (direction.norm() < 1e-9) return std::nullopt;
+  return config.max_range_m * direction.normalized();
+}
+
+}  // namespace
+
+GroundPolygon visibleRegion(const CameraModel& camera, const FieldBoundary& boundary,
+                            const GroundProjectionConfig& config) {
+  GroundPolygon polygon;
+  if (!boundary.found) return polygon;
+  const int n = std::max(2, config.region_columns);
+  const double bottom = camera.height() - 1.0;
+  std::vector<Eigen::Vector2d> far_edge, near_edge;
+  for (int i = 0; i <= n; ++i) {
+    const double u = (camera.width() - 1.0) * i / n;
+    const double top = boundary.rowAt(static_cast<int>(u));
+    if (top >= bottom) continue;
+    const auto far_point = groundOrLimit(camera, u, top, config);
+    const auto near_point = groundOrLimit(camera, u, bottom, config);
+    if (!far_point || !near_point) continue;
+    far_edge.push_back(*far_point);
+    near_edge.push_back(*near_point);
+  }
+  if (far_edge.size() < 2) return polygon;
+  // Image left to right is robot-frame right to left (counter-clockwise on the far edge) when
+  // the camera looks forward; the orientation test below fixes the order for any yaw.
+  polygon = near_edge;
+  polygon.insert(polygon.end(), far_edge.rbegin(), far_edge.rend());
+  double area2 = 0.0;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Eigen::Vector2d& a = polygon[i];
+    const Eigen::Vector2d& b = polygon[(i + 1) % polygon.size()];
+    area2 += a.x() * b.y() - a.y() * b.x();
+  }
+  if (area2 < 0.0) std::reverse(polygon.begin(), polygon.end());
+  return polygon;
+}
+
+}  // namespace houghloc

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "field_models/ground_points.h"
+#include "field_models/pose3.h"
+#include "vision/camera_model.h"
+#include "vision/field_boundary.h"
+#include "vision/line_spots.h"
+
+namespace houghloc {
+
+struct GroundProjectionConfig {
+  double max_range_m = 5.0;          ///< points farther from the robot than this are dropped
+  double min_depression_rad = 0.06;  ///< rays flatter than this below the horizon (grazing, a
+                                     ///< pixel covers decimetres of ground) are dropped
+  double thin_cell_m = 0.035;        ///< at most one point per ground cell of this size: evens
+                                     ///< out the near field and merges both scan directions'
+                                     ///< hits of the same line (well under 10 cm spacing)
+  double weight_range_m = 4.0;       ///< weight = 1 / (1 + (range / this)^2): far points are
+                                     ///< less accurate
+  int region_columns = 16;           ///< image columns sampled for the visible-region polygon
+};
+
+/// A spot's viewing ray in the camera body frame. Computed once (undistortion is the expensive
+/// part); projecting it with any camera orientation is then a rotation and a plane intersection,
+/// which the pitch/roll correction relies on.
+struct SpotRay {
+  Eigen::Vector3d ray_camera = Eigen::Vector3d::UnitX();
+  Eigen::Vector2f pixel = Eigen::Vector2f::Zero();
+  bool vertical_scan = false;
+};
+
+std::vector<SpotRay> spotRays(const CameraModel& camera, const std::vector<LineSpot>& spots);
+
+/// Intersection of a camera-frame ray with the ground z = 0 for robot_T_camera; none above the
+/// horizon, at grazing angles or beyond the range limit.
+std::optional<Eigen::Vector2d> rayToGround(const Eigen::Vector3d& ray_camera,
+                                           const Pose3& robot_T_camera,
+                                           const GroundProjectionConfig& config);
+
+struct ProjectionStats {
+  int dropped_range = 0;  ///< beyond max_range_m, grazing or above the horizon
+  int thinned = 0;        ///< removed by the ground-cell thinning
+};
+
+/// Projects the rays with robot_T_camera, drops far/grazing ones and thins near ones.
+std::vector<GroundPoint> projectSpots(const std::vector<SpotRay>& rays, const Pose3& robot_T_camera,
+                                      int camera_id, const GroundProjectionConfig& config,
+                                      ProjectionStats* stats = nullptr);
+
+/// The ground the camera saw: field boundary (or range limit) and bottom image border projected
+/// to the ground, robot frame, counter-clockwise seen from above; empty without a boundary.
+GroundPolygon visibleRegion(const CameraModel& camera, const FieldBoundary& boundary,
+                            const GroundProjectionConfig& config);
+
+}  // namespace houghloc

@@ -1,0 +1,145 @@
+#include "vision/line_spots.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace houghloc {
+namespace {
+
+/// One scanline: n BGR pixels starting at `first`, `stride` bytes apart; (u0, v0) + i * (du, dv)
+/// is pixel i's position.
+struct Scanline {
+  const uchar* first;
+  long stride;
+  int n;
+  int u0, v0, du, dv;
+  const uchar* at(int i) const { return first + stride * i; }
+  int luma(int i) const { return FieldColor::luma(at(i)); }
+};
+
+class SpotScanner {
+ public:
+  SpotScanner(const FieldColor& color, const LineWidthModel& widths, const LineSpotConfig& config,
+              std::vector<LineSpot>* spots, LineSpotStats* stats)
+      : color_(color), widths_(widths), config_(config), spots_(spots), stats_(stats) {
+    threshold_ =
+        static_cast<int>(std::max(config.min_contrast, config.noise_contrast * color.luma_sigma));
+  }
+
+  void scan(const Scanline& line) const {
+    constexpr int kEdgeGap = 2;  // compare with the pixel two back: tolerates one blurred pixel
+    int i = kEdgeGap;
+    while (i < line.n) {
+      const int background = line.luma(i - kEdgeGap);
+      if (line.luma(i) - background < threshold_) {
+        ++i;
+        continue;
+      }
+      int end = i;
+      int peak = i;
+      while (end < line.n && line.luma(end) - background >= threshold_ / 2) {
+        if (line.luma(end) > line.luma(peak)) peak = end;
+        ++end;
+      }
+      check(line, i - kEdgeGap, peak, end);
+      i = end + 1;
+    }
+  }
+
+ private:
+  /// Half-maximum crossing walking from the peak in direction dir, sub-pixel.
+  static float crossing(const Scanline& line, int peak, int dir, float level) {
+    int k = peak;
+    while (k + dir >= 0 && k + dir < line.n && line.luma(k + dir) >= level) k += dir;
+    if (k + dir < 0 || k + dir >= line.n) return static_cast<float>(k);
+    const float inside = static_cast<float>(line.luma(k)),
+                outside = static_cast<float>(line.luma(k + dir));
+    const float t = inside > outside ? (inside - level) / (inside - outside) : 0.5f;
+    return k + dir * t;
+  }
+
+  bool greenWithin(const Scanline& line, int from, int dir, int count) const {
+    for (int k = 0; k < count; ++k) {
+      const int idx = from + dir * k;
+      if (idx < 0 || idx >= line.n) return false;
+      if (color_.isField(line.at(idx))) return true;
+    }
+    return false;
+  }
+
+  void check(const Scanline& line, int before, int peak, int end) const {
+    if (stats_) ++stats_->candidates;
+    const int after = std::min(line.n - 1, end + 1);
+    const int peak_luma = line.luma(peak);
+    const int background_before = line.luma(before), background_after = line.luma(after);
+    if (peak_luma - background_after < threshold_ || end >= line.n) {
+      if (stats_) ++stats_->not_green_bounded;
+      return;
+    }
+    if (!color_.isWhitish(line.at(peak))) {
+      if (stats_) ++stats_->not_white;
+      return;
+    }
+    const float level = 0.5f * (peak_luma + 0.5f * (background_before + background_after));
+    const float left = crossing(line, peak, -1, level), right = crossing(line, peak, +1, level);
+    const float centre = 0.5f * (left + right), width = right - left;
+    const float u = line.u0 + line.du * centre, v = line.v0 + line.dv * centre;
+    const Eigen::Vector2f expected_xy = widths_.expectedPx(u, v);
+    const float expected = line.dv != 0 ? expected_xy.y() : expected_xy.x();
+    if (width > config_.max_width_ratio * expected + config_.width_tolerance_px) {
+      if (stats_) ++stats_->too_wide;
+      return;
+    }
+    if (width < config_.min_width_ratio * expected - 1.f || expected <= 0.f) {
+      if (stats_) ++stats_->too_narrow;
+      return;
+    }
+    const int gap =
+        config_.green_gap_px + static_cast<int>(config_.green_gap_width_share * expected + 0.5);
+    if (!greenWithin(line, static_cast<int>(std::floor(left)), -1, gap + 1) ||
+        !greenWithin(line, static_cast<int>(std::ceil(right)), +1, gap + 1)) {
+      if (stats_) ++stats_->not_green_bounded;
+      return;
+    }
+    spots_->push_back({{u, v}, width, expected, line.dv != 0});
+  }
+
+  const FieldColor& color_;
+  const LineWidthModel& widths_;
+  const LineSpotConfig& config_;
+  std::vector<LineSpot>* spots_;
+  LineSpotStats* stats_;
+  int threshold_ = 0;
+};
+
+}  // namespace
+
+std::vector<LineSpot> detectLineSpots(const cv::Mat& bgr, const FieldColor& color,
+                                      const FieldBoundary& boundary, const ScanGrid& grid,
+                                      const LineWidthModel& widths, const LineSpotConfig& config,
+                                      LineSpotStats* stats) {
+  std::vector<LineSpot> spots;
+  if (!color.valid || !boundary.found) return spots;
+  const SpotScanner scanner(color, widths, config, &spots, stats);
+  for (const ScanGrid::Column& column : grid.columns) {
+    const int n = column.v_end - column.v_begin;
+    if (n < 4) continue;
+    scanner.scan({bgr.ptr<uchar>(column.v_begin) + 3 * column.u, static_cast<long>(bgr.step[0]), n,
+                  column.u, column.v_begin, 0, 1});
+  }
+  for (int v : grid.rows) {
+    // Scan each stretch of the row that lies below the boundary.
+    int u = 0;
+    while (u < bgr.cols) {
+      while (u < bgr.cols && boundary.rowAt(u) > v) ++u;
+      const int begin = u;
+      while (u < bgr.cols && boundary.rowAt(u) <= v) ++u;
+      if (u - begin >= 4) {
+        scanner.scan({bgr.ptr<uchar>(v) + 3 * begin, 3, u - begin, begin, v, 1, 0});
+      }
+    }
+  }
+  return spots;
+}
+
+}  // namespace houghloc

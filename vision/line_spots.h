@@ -1,0 +1,49 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "vision/field_boundary.h"
+#include "vision/field_color.h"
+#include "vision/line_width_model.h"
+#include "vision/scan_grid.h"
+
+namespace houghloc {
+
+struct LineSpotConfig {
+  double min_contrast = 18.0;       ///< luma (0-255) a line must rise above the turf on both sides
+  double noise_contrast = 3.5;      ///< ... and at least this many turf-texture sigmas
+  double min_width_ratio = 0.4;     ///< measured / expected width; worn or anti-aliased lines
+  double max_width_ratio = 1.7;     ///< above: robots, feet, ball, posts (the other scan direction
+                                    ///< catches lines crossing this one obliquely)
+  double width_tolerance_px = 2.0;  ///< added to the allowed width: blur, anti-aliasing
+  int green_gap_px = 3;             ///< green must appear within this many px beyond each edge
+  double green_gap_width_share = 0.3;  ///< ... plus this share of the expected width
+};
+
+/// The centre of a bright run across a scanline that looks like a field line.
+struct LineSpot {
+  Eigen::Vector2f pixel = Eigen::Vector2f::Zero();  ///< (u, v), distorted image, sub-pixel
+  float width_px = 0.f;     ///< measured width along the scanline (half maximum)
+  float expected_px = 0.f;  ///< expected width along the scanline for a perpendicular line
+  bool vertical_scan = false;
+};
+
+/// Why candidates were rejected (for diagnostics and tuning).
+struct LineSpotStats {
+  int candidates = 0;
+  int too_narrow = 0;
+  int too_wide = 0;
+  int not_green_bounded = 0;
+  int not_white = 0;
+};
+
+/// Scans the grid's rows and columns below the field boundary for bright, low-saturation runs with
+/// turf on both sides whose half-maximum width matches the expected line width there.
+std::vector<LineSpot> detectLineSpots(const cv::Mat& bgr, const FieldColor& color,
+                                      const FieldBoundary& boundary, const ScanGrid& grid,
+                                      const LineWidthModel& widths, const LineSpotConfig& config,
+                                      LineSpotStats* stats = nullptr);
+
+}  // namespace houghloc

@@ -1,0 +1,84 @@
+#include "vision/scan_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace houghloc {
+namespace {
+
+/// First row (from the top) in column u whose ground lies within max_range_m: bisection on
+/// pixelToGround, which the camera model rejects above the horizon and beyond its own range.
+int rangeLimitRow(const CameraModel& camera, double u, double max_range_m) {
+  const auto within = [&](int v) {
+    const auto p = camera.pixelToGround(u, v);
+    return p && p->norm() <= max_range_m;
+  };
+  int lo = 0, hi = camera.height() - 1;
+  if (within(lo)) return 0;
+  if (!within(hi)) return camera.height();
+  while (hi - lo > 1) {
+    const int mid = (lo + hi) / 2;
+    (within(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+int clampStep(double step, int min_step, int max_step) {
+  if (!std::isfinite(step)) return min_step;
+  return std::clamp(static_cast<int>(step), min_step, max_step);
+}
+
+}  // namespace
+
+ScanGrid makeScanGrid(const CameraModel& camera, const LineWidthModel& widths,
+                      const FieldBoundary& boundary, const ScanGridConfig& config) {
+  ScanGrid grid;
+  const int width = camera.width(), height = camera.height();
+  const double u_mid = 0.5 * (width - 1);
+  // With roll the range limit is tilted: take the most permissive of three probes; every spot
+  // is range-checked again when it is projected.
+  grid.top_row = std::min({rangeLimitRow(camera, 0.0, config.max_range_m),
+                           rangeLimitRow(camera, u_mid, config.max_range_m),
+                           rangeLimitRow(camera, width - 1.0, config.max_range_m)});
+  float boundary_top = static_cast<float>(height);
+  for (float row : boundary.rows) boundary_top = std::min(boundary_top, row);
+  const int first_row = std::max(grid.top_row, static_cast<int>(std::ceil(boundary_top)));
+  if (first_row >= height) return grid;
+
+  // Horizontal scanlines: the ground distance between rows is metres-per-px along the column.
+  for (double v = height - 1.0; v >= first_row;) {
+    grid.rows.push_back(static_cast<int>(v));
+    const double m_per_px =
+        widths.metresPerPx(static_cast<float>(u_mid), static_cast<float>(v)).y();
+    v -= clampStep(config.target_spacing_m / m_per_px, config.min_row_step_px, config.max_step_px);
+  }
+
+  // Vertical scanlines: level L (every min_step * 2^L px) is needed where the wanted column
+  // spacing is below min_step * 2^(L + 1), i.e. from the top down to the row where it reaches it.
+  const int min_step = std::max(1, config.min_column_step_px);
+  int max_level = 0;
+  while ((min_step << (max_level + 1)) <= config.max_step_px) ++max_level;
+  std::vector<int> level_end(static_cast<size_t>(max_level + 1), height);
+  for (int level = 0; level < max_level; ++level) {
+    int v = first_row;
+    while (v < height) {
+      const double m_per_px =
+          widths.metresPerPx(static_cast<float>(u_mid), static_cast<float>(v)).x();
+      if (config.target_spacing_m / m_per_px >= (min_step << (level + 1))) break;
+      ++v;
+    }
+    level_end[static_cast<size_t>(level)] = v;
+  }
+  for (int k = 0; k * min_step < width; ++k) {
+    int level = 0;
+    while (level < max_level && k % (2 << level) == 0) ++level;
+    ScanGrid::Column column;
+    column.u = k * min_step;
+    column.v_begin = std::max(grid.top_row, static_cast<int>(std::ceil(boundary.rowAt(column.u))));
+    column.v_end = level_end[static_cast<size_t>(level)];
+    if (column.v_end > column.v_begin) grid.columns.push_back(column);
+  }
+  return grid;
+}
+
+}  // namespace houghloc

@@ -1,0 +1,102 @@
+#include "vision/vision_pipeline.h"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "vision/image_conversion.h"
+
+namespace houghloc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point* start) {
+  const Clock::time_point now = Clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - *start).count();
+  *start = now;
+  return ms;
+}
+
+bool samePose(const Pose3& a, const Pose3& b) {
+  return a.x == b.x && a.y == b.y && a.z == b.z && a.roll == b.roll && a.pitch == b.pitch &&
+         a.yaw == b.yaw;
+}
+
+}  // namespace
+
+VisionPipeline::VisionPipeline(const CameraIntrinsics& intrinsics, const VisionConfig& config,
+                               int camera_id)
+    : config_(config),
+      camera_id_(camera_id),
+      camera_(intrinsics, Pose3{}),
+      corrector_(config.pose_correction) {}
+
+VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_camera,
+                                     std::int64_t t_us) {
+  if (!robot_T_camera.isFinite()) {
+    throw std::invalid_argument("robot_T_camera is not finite (NaN or infinite component)");
+  }
+  if (image.cols != camera_.width() || image.rows != camera_.height()) {
+    throw std::invalid_argument("image is " + std::to_string(image.cols) + "x" +
+                                std::to_string(image.rows) + " but the camera is " +
+                                std::to_string(camera_.width()) + "x" +
+                                std::to_string(camera_.height()));
+  }
+  Clock::time_point start = Clock::now(), step = start;
+  VisionResult result;
+  VisionDiagnostics& diag = result.diagnostics;
+  result.ground.t_us = t_us;
+  const cv::Mat bgr = toBgr(image);
+
+  // 1. Horizon from the (corrected) camera pose.
+  const Pose3 pose = corrector_.corrected(robot_T_camera);
+  if (!samePose(pose, camera_.pose())) camera_.setPose(pose);
+  result.robot_T_camera_used = pose;
+  result.horizon_rows = camera_.horizonRows();
+  const std::vector<int> start_rows = scanStartRows(camera_, config_.horizon);
+  // 2-3. Field colour from this frame, then the field boundary.
+  diag.field_color = estimateFieldColor(bgr, start_rows, config_.field_color);
+  result.boundary = detectFieldBoundary(bgr, diag.field_color, start_rows, config_.boundary);
+  diag.time_color_ms = msSince(&step);
+
+  // 4. Line spots on a distance-adapted scan grid below the boundary.
+  const LineWidthModel widths(camera_, config_.line_width_m, config_.line_width);
+  const ScanGrid grid = makeScanGrid(camera_, widths, result.boundary, config_.scan_grid);
+  result.spots = detectLineSpots(bgr, diag.field_color, result.boundary, grid, widths,
+                                 config_.spots, &diag.spot_stats);
+  diag.num_spots = static_cast<int>(result.spots.size());
+  diag.time_spots_ms = msSince(&step);
+
+  // 5. Undistort only the spots; 6. segments, circles and the pitch/roll correction, which
+  // then applies to this frame's projection already.
+  const std::vector<SpotRay> rays = spotRays(camera_, result.spots);
+  diag.time_project_ms = msSince(&step);
+  result.features = fitLineFeatures(rays, pose, config_.projection, config_.segments);
+  diag.pose_correction_updated = corrector_.update(result.features.segments, robot_T_camera);
+  const Pose3 refined = corrector_.corrected(robot_T_camera);
+  if (!samePose(refined, pose)) {
+    result.features = fitLineFeatures(rays, refined, config_.projection, config_.segments);
+    result.robot_T_camera_used = refined;
+    // The horizon and the visible region follow only noticeable changes (setPose recomputes
+    // the horizon per column); the points below use the refined pose exactly.
+    if (std::abs(refined.pitch - pose.pitch) + std::abs(refined.roll - pose.roll) > 1e-3) {
+      camera_.setPose(refined);
+      result.horizon_rows = camera_.horizonRows();
+    }
+  }
+  diag.pose_correction_rad = {refined.roll - robot_T_camera.roll,
+                              refined.pitch - robot_T_camera.pitch};
+  diag.time_features_ms = msSince(&step);
+
+  result.ground.points = projectSpots(rays, result.robot_T_camera_used, camera_id_,
+                                      config_.projection, &diag.projection_stats);
+  GroundPolygon region = visibleRegion(camera_, result.boundary, config_.projection);
+  if (!region.empty()) result.ground.visible_regions.push_back(std::move(region));
+  diag.time_project_ms += msSince(&step);
+  diag.time_total_ms = msSince(&start);
+  return result;
+}
+
+}  // namespace houghloc

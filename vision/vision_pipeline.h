@@ -1,0 +1,85 @@
+#pragma once
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "field_models/ground_points.h"
+#include "field_models/pose3.h"
+#include "vision/camera_model.h"
+#include "vision/camera_pose_corrector.h"
+#include "vision/field_boundary.h"
+#include "vision/field_color.h"
+#include "vision/ground_projection.h"
+#include "vision/horizon.h"
+#include "vision/line_segments.h"
+#include "vision/line_spots.h"
+#include "vision/line_width_model.h"
+#include "vision/scan_grid.h"
+
+namespace houghloc {
+
+/// Every vision tunable; the config file's `vision:` section has one sub-map per member.
+struct VisionConfig {
+  double line_width_m = 0.05;  ///< painted line width, normally taken from the map
+  HorizonConfig horizon;
+  FieldColorConfig field_color;
+  FieldBoundaryConfig boundary;
+  LineWidthModelConfig line_width;
+  ScanGridConfig scan_grid;
+  LineSpotConfig spots;
+  GroundProjectionConfig projection;
+  LineSegmentConfig segments;
+  CameraPoseCorrectionConfig pose_correction;
+};
+
+/// Per-step times and counts of one frame, for tuning and the offline summary.
+struct VisionDiagnostics {
+  FieldColor field_color;
+  LineSpotStats spot_stats;
+  ProjectionStats projection_stats;
+  int num_spots = 0;
+  bool pose_correction_updated = false;
+  Eigen::Vector2d pose_correction_rad = Eigen::Vector2d::Zero();  ///< (roll, pitch) applied
+  double time_total_ms = 0.0;
+  double time_color_ms = 0.0;     ///< conversion, horizon, field colour, boundary
+  double time_spots_ms = 0.0;     ///< width model, scan grid, spot detection
+  double time_project_ms = 0.0;   ///< rays, projection, visible region
+  double time_features_ms = 0.0;  ///< segments, circles, pose correction
+};
+
+struct VisionResult {
+  GroundPoints ground;               ///< line points and visible region, robot frame
+  std::vector<double> horizon_rows;  ///< per column, from the corrected camera pose
+  FieldBoundary boundary;            ///< field boundary per column
+  std::vector<LineSpot> spots;       ///< accepted spots before projection and thinning
+  LineFeatures features;             ///< short segments and centre-circle candidates
+  Pose3 robot_T_camera_used;         ///< the recorded pose plus the online correction
+  VisionDiagnostics diagnostics;
+};
+
+/// Image + camera pose -> ground points (DESIGN §2). Keeps the camera model and the online
+/// pitch/roll correction between frames; otherwise every frame stands alone.
+class VisionPipeline {
+ public:
+  /// Throws std::invalid_argument for invalid intrinsics.
+  explicit VisionPipeline(const CameraIntrinsics& intrinsics, const VisionConfig& config = {},
+                          int camera_id = 0);
+
+  /// image: BGR8 (CV_8UC3) or YUYV (CV_8UC2) of the intrinsics' size. Throws
+  /// std::invalid_argument for another size or type and for a non-finite camera pose.
+  VisionResult process(const cv::Mat& image, const Pose3& robot_T_camera, std::int64_t t_us = 0);
+
+  const VisionConfig& config() const { return config_; }
+  const CameraModel& camera() const { return camera_; }
+  const CameraPoseCorrector& poseCorrector() const { return corrector_; }
+  void resetPoseCorrection() { corrector_.reset(); }
+
+ private:
+  VisionConfig config_;
+  int camera_id_ = 0;
+  CameraModel camera_;
+  CameraPoseCorrector corrector_;
+};
+
+}  // namespace houghloc
