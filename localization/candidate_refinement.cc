@@ -31,16 +31,25 @@ bool carpetInterval(const Eigen::Vector2d& t0, const Eigen::Vector2d& u, double 
 
 std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
     const PoseHypothesis& candidate, const WeightedPoints& points,
-    const VisibilityEvidence& evidence) const {
+    const VisibilityEvidence& evidence, int* line_scans) const {
   PoseHypothesis h = candidate;
   const bool was_parallel = h.kind == HypothesisKind::kParallel;
-  RefinementResult r = refinePose(points, h.field_T_robot, map_.features(), config_.refinement,
-                                  was_parallel ? h.line_direction : Eigen::Vector2d::Zero());
+  const Eigen::Vector2d frozen = was_parallel ? h.line_direction : Eigen::Vector2d::Zero();
+  // Coarse iterations on a subsample, then a few on all points.
+  RefinementConfig coarse = config_.refinement;
+  coarse.max_distance_m *= 1.5;
+  Pose2 start = refinePose(subsamplePoints(points, config_.prescore_points), h.field_T_robot,
+                           map_.features(), coarse, frozen)
+                    .field_T_robot;
+  RefinementConfig fine = config_.refinement;
+  fine.iterations = 3;
+  RefinementResult r = refinePose(points, start, map_.features(), fine, frozen);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(r.information.topLeftCorner<2, 2>());
   const bool observed = eig.eigenvalues()(0) >= config_.min_observed_weight;
   if (observed && was_parallel) {
     r = refinePose(points, r.field_T_robot, map_.features(), config_.refinement);
   }
+  if (!observed && *line_scans >= config_.max_line_scans) return {};
   h.field_T_robot = r.field_T_robot;
   h.covariance = r.covariance;
   h.rms_m = r.rms_m;
@@ -48,6 +57,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
     // Only parallel lines constrain the position: the paper's case M = 1.
     h.kind = HypothesisKind::kParallel;
     h.line_direction = eig.eigenvectors().col(0).normalized();
+    ++*line_scans;
     return placeAlongLines(h, points, evidence);
   }
   h.kind = HypothesisKind::kFull;

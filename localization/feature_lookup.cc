@@ -11,6 +11,7 @@ FeatureLookup::FeatureLookup(const FieldModel& field, double resolution_m, doubl
     : field_copy_(field), resolution_(resolution_m) {
   const double hx = field.outerHalfLength() + margin_m, hy = field.outerHalfWidth() + margin_m;
   origin_ = Eigen::Vector2d(-hx, -hy);
+  for (const Segment2& s : field.segments) lines_.push_back({s.a, s.direction(), s.length()});
   cols_ = static_cast<int>(std::ceil(2.0 * hx / resolution_m));
   rows_ = static_cast<int>(std::ceil(2.0 * hy / resolution_m));
   cells_.resize(static_cast<std::size_t>(cols_) * rows_);
@@ -32,16 +33,15 @@ FeatureLookup::Residual FeatureLookup::residual(const Eigen::Vector2d& p) const 
   Eigen::Vector2d q;
   if (f.kind == FeatureKind::kSegment) {
     // Signed point-to-line distance inside the segment: smooth across the line for Gauss-Newton.
-    const Segment2& s = field_copy_.segments[f.index];
-    const Eigen::Vector2d u = s.direction();
-    const double t = (p - s.a).dot(u);
-    if (t > 0.0 && t < s.length()) {
-      out.direction = Eigen::Vector2d(-u.y(), u.x());
-      out.distance_m = out.direction.dot(p - s.a);
+    const Line& line = lines_[f.index];
+    const double t = (p - line.a).dot(line.u);
+    if (t > 0.0 && t < line.length) {
+      out.direction = Eigen::Vector2d(-line.u.y(), line.u.x());
+      out.distance_m = out.direction.dot(p - line.a);
       out.valid = true;
       return out;
     }
-    q = s.closestPoint(p);
+    q = field_copy_.segments[f.index].closestPoint(p);
   } else if (f.kind == FeatureKind::kArc) {
     const Arc2& arc = field_copy_.arcs[f.index];
     const Eigen::Vector2d v = p - arc.center;

@@ -28,7 +28,12 @@ class FeatureLookup {
   Residual residual(const Eigen::Vector2d& p_field) const;
 
  private:
+  struct Line {
+    Eigen::Vector2d a, u;  ///< start and unit direction
+    double length;
+  };
   FieldModel field_copy_;
+  std::vector<Line> lines_;  ///< per segment, precomputed
   Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
   double resolution_ = 0.05;
   int cols_ = 0, rows_ = 0;

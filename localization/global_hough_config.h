@@ -26,6 +26,7 @@ struct GlobalHoughConfig {
   double line_scan_step_m = 0.1;         ///< step of the scan along parallel lines
   double line_scan_tolerance = 0.1;      ///< positions within this share of the best score are
                                          ///< equally likely along the lines
+  int max_line_scans = 4;                ///< parallel-only candidates scanned per frame
   bool use_circle = true;                ///< beyond the paper: centre-circle candidates
   bool use_marks = true;                 ///< beyond the paper: penalty-mark candidates
 

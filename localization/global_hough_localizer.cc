@@ -41,8 +41,11 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
   located = pruneCandidates(located, config_.pruning);  // ... segment extents
   const VisibilityEvidence evidence(frame, points, config_.negative);
   std::vector<PoseHypothesis> refined;
+  int line_scans = 0;
   for (const PoseHypothesis& c : located) {
-    for (PoseHypothesis& h : refineCandidate(c, points, evidence)) refined.push_back(h);
+    for (PoseHypothesis& h : refineCandidate(c, points, evidence, &line_scans)) {
+      refined.push_back(h);
+    }
   }
   std::vector<PoseHypothesis> out = mergeDuplicates(refined, config_.hypotheses);
   normalizeWeights(out, config_.hypotheses);

@@ -43,10 +43,12 @@ class GlobalHoughLocalizer {
   /// lines constrain it; then a scan along the lines places the mean), covariance, final score
   /// including negative evidence.
   /// A kParallel candidate can come back as several hypotheses, one per stretch of the lines
-  /// where the points fit equally well.
+  /// where the points fit equally well; `line_scans` counts those scans (at most
+  /// config.max_line_scans per frame, further parallel-only candidates are dropped).
   std::vector<PoseHypothesis> refineCandidate(const PoseHypothesis& candidate,
                                               const WeightedPoints& points,
-                                              const VisibilityEvidence& evidence) const;
+                                              const VisibilityEvidence& evidence,
+                                              int* line_scans) const;
 
  private:
   double totalScore(const Pose2& pose, const WeightedPoints& points,

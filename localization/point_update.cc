@@ -7,10 +7,16 @@
 namespace houghloc {
 namespace {
 
-/// Huber weight for a residual in sigmas: 1 inside the threshold, k / |r| outside.
-double huberWeight(double r_sigmas, double k) {
-  const double a = std::abs(r_sigmas);
-  return a <= k ? 1.0 : k / a;
+/// IRLS weight for a residual in sigmas. Huber: 1 inside k, k / |r| outside. Cauchy:
+/// 1 / (1 + (r / k)^2).
+double robustWeight(double r_sigmas, const PointUpdateConfig& cfg) {
+  const double k = cfg.kernel_sigmas;
+  if (cfg.kernel == PointUpdateConfig::Kernel::kHuber) {
+    const double a = std::abs(r_sigmas);
+    return a <= k ? 1.0 : k / a;
+  }
+  const double u = r_sigmas / k;
+  return 1.0 / (1.0 + u * u);
 }
 
 /// Information matrix of a covariance, regularised so a singular or huge covariance still gives a
@@ -63,7 +69,7 @@ Accumulated accumulate(const Pose2& pose, const Eigen::Matrix3d& gate_cov,
                             a.normal.dot(Eigen::Vector2d(-arm.y(), arm.x())));
     const double innovation_var = j.dot(gate_cov * j) + var;
     if (a.residual_m * a.residual_m > cfg.gate_chi2 * innovation_var) continue;
-    const double w = gp.weight * huberWeight(a.residual_m / cfg.point_sigma_m, cfg.huber_sigmas);
+    const double w = gp.weight * robustWeight(a.residual_m / cfg.point_sigma_m, cfg);
     acc.jtj.noalias() += w * j * j.transpose();
     acc.jtr.noalias() += (w * a.residual_m) * j;
     acc.weight_sum += w;

@@ -14,10 +14,14 @@ struct PointUpdateConfig {
   double point_sigma_m = 0.03;     ///< std of a ground point across its line, m
   double max_association_m = 0.5;  ///< points farther from every line are not associated, m
   double gate_chi2 = 9.0;          ///< Mahalanobis gate r^2 / (J P J^T + sigma^2), 1 dof
-  double huber_sigmas = 1.5;       ///< Huber kernel threshold, in point_sigma_m
-  int max_iterations = 6;          ///< Gauss-Newton iterations per frame
-  double converged_m = 5e-4;       ///< stop when a step moves less than this, m
-  double converged_rad = 5e-4;     ///< and turns less than this, rad
+  /// Robust kernel. Cauchy (redescending) keeps far outliers from steering directions the lines
+  /// leave unconstrained (e.g. heading when only the centre circle is seen); Huber is convex.
+  enum class Kernel { kHuber, kCauchy };
+  Kernel kernel = Kernel::kCauchy;
+  double kernel_sigmas = 2.0;   ///< kernel scale, in point_sigma_m
+  int max_iterations = 6;       ///< Gauss-Newton iterations per frame
+  double converged_m = 5e-4;    ///< stop when a step moves less than this, m
+  double converged_rad = 5e-4;  ///< and turns less than this, rad
   /// Points along one line have correlated errors (camera pose, line width); their information is
   /// scaled so that no more than this many count as independent. Keeps covariances honest.
   double max_effective_points = 40.0;

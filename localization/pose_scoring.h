@@ -28,7 +28,7 @@ PoseScore scorePose(const WeightedPoints& points, const Pose2& field_T_robot,
 struct PruningConfig {
   double min_inlier_share = 0.25;  ///< drop candidates with fewer points on map segments
   double min_relative_score = 0.5; ///< ... or scoring below this share of the best candidate
-  int keep = 32;                   ///< at most this many survivors, best first
+  int keep = 20;                   ///< at most this many survivors, best first
   double duplicate_distance_m = 0.2;  ///< survivors closer than this ...
   double duplicate_angle_rad = 0.08;  ///< ... and this in heading count once
 };

@@ -125,7 +125,7 @@ std::optional<Eigen::Vector2d> CameraModel::pixelToGround(double u, double v) co
 
 // The horizon is where the image of the ground plane's points at infinity lies: the projections
 // of the horizontal directions (cos a, sin a, 0). Sampling a and solving u(a) = column per
-// column with the Illinois method costs a few forward projections per column, no
+// column with safeguarded secant steps costs a few forward projections per column, no
 // undistortion, so setPose() stays cheap enough for per-frame head motion.
 void CameraModel::computeHorizon() {
   horizon_rows_.assign(width(), kNaN);
@@ -151,35 +151,39 @@ void CameraModel::computeHorizon() {
     const int last = std::min(width() - 1, static_cast<int>(std::floor(std::max(u0, u1))));
     for (int column = first; column <= last; ++column) {
       if (!std::isnan(horizon_rows_[column])) continue;
+      // Secant steps, kept inside the bracket [a_lo, a_hi] (bisection when they leave it).
       double a_lo = -kPi + 2.0 * kPi * i / samples, f_lo = u0 - column;
       double a_hi = -kPi + 2.0 * kPi * (i + 1) / samples, f_hi = u1 - column;
-      double v = f_lo == 0.0 ? pixels[i]->y() : pixels[i + 1]->y();
-      int side = 0;
-      for (int iteration = 0; iteration < 30 && f_lo != 0.0 && f_hi != 0.0; ++iteration) {
-        const double a = (a_lo * f_hi - a_hi * f_lo) / (f_hi - f_lo);
+      double a0 = a_lo, f0 = f_lo, a1 = a_hi, f1 = f_hi;
+      double v = std::abs(f_lo) < std::abs(f_hi) ? pixels[i]->y() : pixels[i + 1]->y();
+      for (int iteration = 0; iteration < 40 && f_lo != 0.0 && f_hi != 0.0; ++iteration) {
+        double a = a1 - f1 * (a1 - a0) / (f1 - f0);
+        if (!(a > a_lo && a < a_hi)) a = 0.5 * (a_lo + a_hi);
         const auto p = pixelOf(a);
         if (!p) break;
         const double f = p->x() - column;
         v = p->y();
         if (std::abs(f) < 1e-7) break;
-        if ((f < 0.0) == (f_lo < 0.0)) {
-          a_lo = a, f_lo = f;
-          if (side == -1) f_hi *= 0.5;  // Illinois: halve the stale end to keep convergence fast
-          side = -1;
-        } else {
-          a_hi = a, f_hi = f;
-          if (side == 1) f_lo *= 0.5;
-          side = 1;
-        }
+        ((f < 0.0) == (f_lo < 0.0) ? a_lo : a_hi) = a;
+        ((f < 0.0) == (f_lo < 0.0) ? f_lo : f_hi) = f;
+        a0 = a1, f0 = f1, a1 = a, f1 = f;
       }
       horizon_rows_[column] = v;
     }
   }
-  // Columns the horizon misses: all ground or no ground, judged by the column's centre ray.
+  // Columns the horizon misses: all ground or no ground, judged by the centre ray of the first
+  // column of each run of them (one undistortion per run keeps setPose() cheap).
+  double run_value = kNaN;
   for (int column = 0; column < width(); ++column) {
-    if (!std::isnan(horizon_rows_[column])) continue;
-    const Eigen::Vector3d ray = pixelRay(column, 0.5 * (height() - 1));
-    horizon_rows_[column] = allFinite(ray) && ray.z() < 0.0 ? -kInf : kInf;
+    if (!std::isnan(horizon_rows_[column]) && !std::isinf(horizon_rows_[column])) {
+      run_value = kNaN;
+      continue;
+    }
+    if (std::isnan(run_value)) {
+      const Eigen::Vector3d ray = pixelRay(column, 0.5 * (height() - 1));
+      run_value = allFinite(ray) && ray.z() < 0.0 ? -kInf : kInf;
+    }
+    horizon_rows_[column] = run_value;
   }
 }
 

@@ -42,7 +42,8 @@ double pairResidual(double angle_a, double angle_b) {
 double CameraPoseCorrector::directionSigma(const GroundSegment& segment) const {
   // Least-squares line through n points spread over length L: sigma_angle ~ sigma sqrt(12 / n) / L.
   const double sigma = std::max(segment.rms_m, config_.min_point_sigma_m);
-  return sigma * std::sqrt(12.0 / std::max(2, segment.num_points)) / std::max(0.1, segment.length());
+  return sigma * std::sqrt(12.0 / std::max(2, segment.num_points)) /
+         std::max(0.1, segment.length());
 }
 
 Pose3 CameraPoseCorrector::corrected(const Pose3& recorded) const {

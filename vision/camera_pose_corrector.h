@@ -10,7 +10,7 @@
 namespace houghloc {
 
 struct CameraPoseCorrectionConfig {
-  bool enabled = false;  ///< off by default: see docs/vision.md for when it helps
+  bool enabled = false;               ///< off by default: see docs/vision.md for when it helps
   double min_segment_length_m = 0.8;  ///< shorter segments give too noisy directions
   double max_segment_rms_m = 0.006;   ///< only clean straight fits constrain the tilt
   double min_point_sigma_m = 0.004;   ///< floor of the per-point noise used for a direction's sigma

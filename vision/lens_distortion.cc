@@ -61,6 +61,19 @@ double LensDistortion::radial(double x) const {
   return model_ == DistortionModel::kFisheye ? radialFisheye(x) : radialPinhole(x);
 }
 
+double LensDistortion::radialDerivative(double x) const {
+  const double x2 = x * x;
+  if (model_ == DistortionModel::kFisheye) {
+    return 1.0 + x2 * (3.0 * k_[0] + x2 * (5.0 * k_[1] + x2 * (7.0 * k_[2] + x2 * 9.0 * k_[3])));
+  }
+  // d/dr [r N(r^2) / D(r^2)] = N/D + 2 r^2 (N' D - N D') / D^2.
+  const double n = 1.0 + x2 * (k_[0] + x2 * (k_[1] + x2 * k_[4]));
+  const double d = 1.0 + x2 * (k_[5] + x2 * (k_[6] + x2 * k_[7]));
+  const double dn = k_[0] + x2 * (2.0 * k_[1] + x2 * 3.0 * k_[4]);
+  const double dd = k_[5] + x2 * (2.0 * k_[6] + x2 * 3.0 * k_[7]);
+  return n / d + 2.0 * x2 * (dn * d - n * dd) / (d * d);
+}
+
 // The valid cone ends where the radial mapping stops increasing (or the rational model's
 // denominator vanishes): beyond it two directions share a pixel and inversion is ambiguous.
 void LensDistortion::computeValidFieldAngle() {
@@ -81,26 +94,40 @@ void LensDistortion::computeValidFieldAngle() {
     last_good_theta = theta;
   }
   // One step of margin keeps the Newton iteration away from the fold's zero derivative.
-  max_theta_rad_ = std::max(0.0, last_good_theta - theta_cap / steps);
-  max_radial_arg_ = arg(max_theta_rad_);
+  limitFieldAngle(std::max(0.0, last_good_theta - theta_cap / steps));
 }
 
 void LensDistortion::limitFieldAngle(double max_theta_rad) {
   if (!(max_theta_rad < max_theta_rad_)) return;
   max_theta_rad_ = std::max(0.0, max_theta_rad);
   max_radial_arg_ = model_ == DistortionModel::kFisheye ? max_theta_rad_ : std::tan(max_theta_rad_);
+  max_r2_pinhole_ = std::tan(max_theta_rad_) * std::tan(max_theta_rad_);
 }
 
-Eigen::Vector2d LensDistortion::distortPinhole(const Eigen::Vector2d& p) const {
+Eigen::Vector2d LensDistortion::distortPinhole(const Eigen::Vector2d& p,
+                                               Eigen::Matrix2d* jacobian) const {
   const double x = p.x(), y = p.y();
   const double r2 = x * x + y * y;
-  const double radial_factor = (1.0 + r2 * (k_[0] + r2 * (k_[1] + r2 * k_[4]))) /
-                               (1.0 + r2 * (k_[5] + r2 * (k_[6] + r2 * k_[7])));
+  const double n = 1.0 + r2 * (k_[0] + r2 * (k_[1] + r2 * k_[4]));
+  const double d = 1.0 + r2 * (k_[5] + r2 * (k_[6] + r2 * k_[7]));
+  const double radial_factor = n / d;
   const double p1 = k_[2], p2 = k_[3];
   const double xd =
       x * radial_factor + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x) + k_[8] * r2 + k_[9] * r2 * r2;
   const double yd = y * radial_factor + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y + k_[10] * r2 +
                     k_[11] * r2 * r2;
+  if (jacobian) {
+    const double dn = k_[0] + r2 * (2.0 * k_[1] + r2 * 3.0 * k_[4]);
+    const double dd = k_[5] + r2 * (2.0 * k_[6] + r2 * 3.0 * k_[7]);
+    const double dr = (dn * d - n * dd) / (d * d);  // d radial_factor / d r2
+    const double prism_x = k_[8] + 2.0 * k_[9] * r2, prism_y = k_[10] + 2.0 * k_[11] * r2;
+    (*jacobian)(0, 0) =
+        radial_factor + 2.0 * x * x * dr + 2.0 * p1 * y + 6.0 * p2 * x + 2.0 * x * prism_x;
+    (*jacobian)(0, 1) = 2.0 * x * y * dr + 2.0 * p1 * x + 2.0 * p2 * y + 2.0 * y * prism_x;
+    (*jacobian)(1, 0) = 2.0 * x * y * dr + 2.0 * p1 * x + 2.0 * p2 * y + 2.0 * x * prism_y;
+    (*jacobian)(1, 1) =
+        radial_factor + 2.0 * y * y * dr + 6.0 * p1 * y + 2.0 * p2 * x + 2.0 * y * prism_y;
+  }
   return {xd, yd};
 }
 
@@ -109,12 +136,14 @@ std::optional<Eigen::Vector2d> LensDistortion::distort(const Eigen::Vector3d& ra
       ray.z() <= 0.0) {
     return std::nullopt;
   }
+  if (model_ == DistortionModel::kPinhole) {
+    const Eigen::Vector2d p(ray.x() / ray.z(), ray.y() / ray.z());
+    if (p.squaredNorm() > max_r2_pinhole_) return std::nullopt;
+    return distortPinhole(p);
+  }
   const double rho = std::hypot(ray.x(), ray.y());
   const double theta = std::atan2(rho, ray.z());
   if (theta > max_theta_rad_) return std::nullopt;
-  if (model_ == DistortionModel::kPinhole) {
-    return distortPinhole({ray.x() / ray.z(), ray.y() / ray.z()});
-  }
   if (rho < 1e-300) return Eigen::Vector2d(0.0, 0.0);
   const double scale = radialFisheye(theta) / rho;
   return Eigen::Vector2d(ray.x() * scale, ray.y() * scale);
@@ -128,8 +157,7 @@ double LensDistortion::invertRadial(double target) const {
     const double f = radial(x) - target;
     if (std::abs(f) < 1e-15 * (1.0 + target)) break;
     (f > 0.0 ? hi : lo) = x;
-    const double h = 1e-7 * (1.0 + x);
-    const double derivative = (radial(x + h) - radial(x - h)) / (2.0 * h);
+    const double derivative = radialDerivative(x);
     double next = derivative > 0.0 ? x - f / derivative : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (next == x) break;
@@ -148,40 +176,43 @@ std::optional<Eigen::Vector3d> LensDistortion::undistortFisheye(const Eigen::Vec
   return Eigen::Vector3d(d.x() * s, d.y() * s, std::cos(theta));
 }
 
-std::optional<Eigen::Vector3d> LensDistortion::undistortPinhole(const Eigen::Vector2d& d) const {
-  // Start from the purely radial inverse, then Newton on the full model (tangential and
-  // thin-prism terms) with a central-difference Jacobian and step halving.
-  const double r_d = d.norm();
-  Eigen::Vector2d p = d;
-  if (r_d > 0.0) p *= invertRadial(r_d) / r_d;
-  Eigen::Vector2d residual = distortPinhole(p) - d;
-  for (int i = 0; i < 50 && residual.norm() > kNewtonTolerance; ++i) {
-    Eigen::Matrix2d jacobian;
-    for (int c = 0; c < 2; ++c) {
-      Eigen::Vector2d step = Eigen::Vector2d::Zero();
-      step[c] = 1e-6 * (1.0 + std::abs(p[c]));
-      jacobian.col(c) = (distortPinhole(p + step) - distortPinhole(p - step)) / (2.0 * step[c]);
-    }
-    if (!std::isfinite(jacobian.determinant()) || std::abs(jacobian.determinant()) < 1e-12) {
-      return std::nullopt;
-    }
-    Eigen::Vector2d delta = jacobian.inverse() * residual;
+std::optional<Eigen::Vector2d> LensDistortion::newtonPinhole(const Eigen::Vector2d& d,
+                                                             Eigen::Vector2d p) const {
+  // Newton with the analytic Jacobian; a step that does not reduce the residual is halved.
+  Eigen::Matrix2d jacobian;
+  Eigen::Vector2d residual = distortPinhole(p, &jacobian) - d;
+  for (int i = 0; i < 30 && residual.norm() > kNewtonTolerance; ++i) {
+    const double det = jacobian.determinant();
+    if (!std::isfinite(det) || std::abs(det) < 1e-12) return std::nullopt;
+    const Eigen::Vector2d delta = jacobian.inverse() * residual;
     double scale = 1.0;
-    Eigen::Vector2d candidate = p - delta;
-    Eigen::Vector2d candidate_residual = distortPinhole(candidate) - d;
-    while (scale > 1e-4 &&
-           !(isFinite(candidate_residual) && candidate_residual.norm() < residual.norm())) {
+    Eigen::Matrix2d next_jacobian;
+    Eigen::Vector2d next = p - delta;
+    Eigen::Vector2d next_residual = distortPinhole(next, &next_jacobian) - d;
+    while (scale > 1e-4 && !(isFinite(next_residual) && next_residual.norm() < residual.norm())) {
       scale *= 0.5;
-      candidate = p - scale * delta;
-      candidate_residual = distortPinhole(candidate) - d;
+      next = p - scale * delta;
+      next_residual = distortPinhole(next, &next_jacobian) - d;
     }
-    if (!isFinite(candidate_residual) || candidate_residual.norm() >= residual.norm()) break;
-    p = candidate;
-    residual = candidate_residual;
+    if (!isFinite(next_residual) || next_residual.norm() >= residual.norm()) break;
+    p = next;
+    residual = next_residual;
+    jacobian = next_jacobian;
   }
-  if (!isFinite(residual) || residual.norm() > kNewtonTolerance * 100.0) return std::nullopt;
-  if (std::atan(p.norm()) > max_theta_rad_) return std::nullopt;
-  return Eigen::Vector3d(p.x(), p.y(), 1.0).normalized();
+  if (!isFinite(residual) || residual.norm() > 100.0 * kNewtonTolerance) return std::nullopt;
+  return p;
+}
+
+std::optional<Eigen::Vector3d> LensDistortion::undistortPinhole(const Eigen::Vector2d& d) const {
+  // Mild distortion converges from the distorted point itself in a few steps; strong distortion
+  // may need the purely radial inverse as the start.
+  auto solution = newtonPinhole(d, d);
+  if (!solution || solution->squaredNorm() > max_r2_pinhole_) {
+    const double r_d = d.norm();
+    solution = newtonPinhole(d, r_d > 0.0 ? Eigen::Vector2d(d * (invertRadial(r_d) / r_d)) : d);
+  }
+  if (!solution || solution->squaredNorm() > max_r2_pinhole_) return std::nullopt;
+  return Eigen::Vector3d(solution->x(), solution->y(), 1.0).normalized();
 }
 
 std::optional<Eigen::Vector3d> LensDistortion::undistort(const Eigen::Vector2d& distorted) const {

@@ -39,12 +39,19 @@ class LensDistortion {
   void limitFieldAngle(double max_theta_rad);
 
  private:
-  Eigen::Vector2d distortPinhole(const Eigen::Vector2d& undistorted) const;
+  /// OpenCV's pinhole distortion of a normalized point; `jacobian` (optional) receives its
+  /// derivative for Newton's method.
+  Eigen::Vector2d distortPinhole(const Eigen::Vector2d& undistorted,
+                                 Eigen::Matrix2d* jacobian = nullptr) const;
   /// r (1 + k1 r^2 + ...) / (1 + k4 r^2 + ...) without tangential or prism terms.
   double radialPinhole(double r) const;
   /// theta (1 + k1 theta^2 + k2 theta^4 + k3 theta^6 + k4 theta^8).
   double radialFisheye(double theta) const;
   double radial(double angle_or_r) const;
+  double radialDerivative(double angle_or_r) const;
+  /// Newton from `start` on the full pinhole model; none when it does not converge.
+  std::optional<Eigen::Vector2d> newtonPinhole(const Eigen::Vector2d& distorted,
+                                               Eigen::Vector2d start) const;
   void computeValidFieldAngle();
   std::optional<Eigen::Vector3d> undistortPinhole(const Eigen::Vector2d& distorted) const;
   std::optional<Eigen::Vector3d> undistortFisheye(const Eigen::Vector2d& distorted) const;
@@ -57,6 +64,7 @@ class LensDistortion {
   double max_theta_rad_ = 1.5533;  ///< 89 deg until computeValidFieldAngle()
   /// Upper end of radial()'s monotonic argument range: r = tan(theta) (pinhole) or theta.
   double max_radial_arg_ = 57.0;
+  double max_r2_pinhole_ = 57.0 * 57.0;  ///< max_radial_arg_^2, for the pinhole cone test
 };
 
 }  // namespace houghloc

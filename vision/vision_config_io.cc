@@ -36,7 +36,8 @@ Field member(const std::string& name, bool* value) {
           [name, value](cv::FileStorage& fs) { fs << name << static_cast<int>(*value); }};
 }
 
-#define HL_MEMBER(s, m) {#m, member(#m, &(s).m)}
+#define HL_MEMBER(s, m) \
+  { #m, member(#m, &(s).m) }
 
 std::map<std::string, Fields> sections(VisionConfig& c) {
   return {
@@ -123,7 +124,8 @@ VisionConfig readVisionConfig(const cv::FileNode& section, const std::string& so
 void writeVisionConfig(cv::FileStorage& storage, const VisionConfig& config) {
   VisionConfig copy = config;
   const std::map<std::string, Fields> all = sections(copy);
-  storage << "vision" << "{";
+  storage << "vision"
+          << "{";
   for (const auto& [key, field] : all.at("")) field.write(storage);
   for (const auto& [name, fields] : all) {
     if (name.empty()) continue;

@@ -28,7 +28,8 @@ GroundPoints pointsAt(const std::vector<Eigen::Vector2d>& ps) {
 
 PointUpdateConfig linearConfig() {
   PointUpdateConfig config;
-  config.huber_sigmas = 1e9;  // plain least squares: the hand computation is a Kalman update
+  config.kernel = PointUpdateConfig::Kernel::kHuber;
+  config.kernel_sigmas = 1e9;  // plain least squares: the hand computation is a Kalman update
   return config;
 }
 

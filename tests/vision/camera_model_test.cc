@@ -239,6 +239,57 @@ TEST(CameraModel, HorizonOfRolledCameraIsSloped) {
   }
 }
 
+// The presets use 5 coefficients; the rational (8) and thin-prism (12) terms are checked here
+// against OpenCV in both directions.
+TEST(CameraModel, RationalAndThinPrismModelsMatchOpenCv) {
+  for (const std::vector<double>& distortion :
+       {std::vector<double>{-0.3, 0.1, 0.001, -0.002, -0.01, 0.05, 0.01, 0.002},
+        std::vector<double>{-0.2, 0.05, 0.0015, 0.001, 0.0, 0.02, 0.0, 0.0, 0.002, -0.001, 0.0015,
+                            0.0005}}) {
+    CameraIntrinsics in;
+    in.image_width = 800;
+    in.image_height = 600;
+    in.camera_matrix = cv::Matx33d(520, 0, 401.3, 0, 515, 297.8, 0, 0, 1);
+    in.distortion = distortion;
+    Pose3 pose;
+    pose.z = 0.7;
+    pose.pitch = 0.45;
+    pose.roll = 0.05;
+    const CameraModel cam(in, pose);
+    std::vector<cv::Point2d> pixels;
+    for (int v = 0; v < 600; v += 23)
+      for (int u = 0; u < 800; u += 29) pixels.emplace_back(u + 0.25, v + 0.75);
+    std::vector<cv::Point2d> normalized;
+    cv::undistortPoints(
+        pixels, normalized, in.camera_matrix, in.distortion, cv::noArray(), cv::noArray(),
+        cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 500, 1e-15));
+    cv::Mat rvec, tvec;
+    opencvExtrinsics(pose, &rvec, &tvec);
+    cv::Matx33d r;
+    cv::Rodrigues(rvec, r);
+    std::vector<cv::Point3d> points;
+    for (std::size_t i = 0; i < pixels.size(); ++i) {
+      const Eigen::Vector3d ray = cam.pixelRay(pixels[i].x, pixels[i].y);
+      ASSERT_FALSE(ray.hasNaN());
+      const cv::Vec3d o = r * cv::Vec3d(ray.x(), ray.y(), ray.z());
+      EXPECT_NEAR(520.0 * o[0] / o[2], 520.0 * normalized[i].x, 1e-4);
+      EXPECT_NEAR(515.0 * o[1] / o[2], 515.0 * normalized[i].y, 1e-4);
+      const Eigen::Vector3d p = pose.translation() + 2.0 * ray;
+      points.emplace_back(p.x(), p.y(), p.z());
+    }
+    // Points 2 m along each ray project back onto their pixel, by OpenCV and by CameraModel.
+    const std::vector<cv::Point2d> reference = opencvProject(cam, points);
+    for (std::size_t i = 0; i < pixels.size(); ++i) {
+      const auto pixel = cam.project(Eigen::Vector3d(points[i].x, points[i].y, points[i].z));
+      ASSERT_TRUE(pixel);
+      EXPECT_NEAR(reference[i].x, pixels[i].x, 1e-6);
+      EXPECT_NEAR(reference[i].y, pixels[i].y, 1e-6);
+      EXPECT_NEAR(pixel->x(), pixels[i].x, 1e-6);
+      EXPECT_NEAR(pixel->y(), pixels[i].y, 1e-6);
+    }
+  }
+}
+
 TEST(CameraModel, InvalidIntrinsicsThrow) {
   CameraIntrinsics in;
   in.distortion = {0.1, 0.2, 0.3};

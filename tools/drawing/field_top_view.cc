@@ -20,9 +20,10 @@ std::string metres(double value) {
 /// The largest of 1, 2, 5 x 10^k metres not longer than `max_m`.
 double roundLength(double max_m) {
   double best = 0.01;
-  for (double decade = 0.01; decade <= 1000.0; decade *= 10.0) {
+  for (int exponent = -2; exponent <= 3; ++exponent) {
     for (double step : {1.0, 2.0, 5.0}) {
-      if (step * decade <= max_m) best = step * decade;
+      const double length = step * std::pow(10.0, exponent);
+      if (length <= max_m) best = length;
     }
   }
   return best;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <string>
 
 #include "field_models/field_distance.h"
@@ -152,9 +153,8 @@ nlohmann::json toJson(const VisionMetrics& m) {
 
 std::vector<VisibleRecord> visibleAt(const std::vector<VisibleRecord>& visible, std::int64_t t_us) {
   std::vector<VisibleRecord> rows;
-  auto it = std::lower_bound(visible.begin(), visible.end(), t_us,
-                             [](const VisibleRecord& r, std::int64_t t) { return r.t_us < t; });
-  for (; it != visible.end() && it->t_us == t_us; ++it) rows.push_back(*it);
+  std::copy_if(visible.begin(), visible.end(), std::back_inserter(rows),
+               [t_us](const VisibleRecord& r) { return r.t_us == t_us; });
   return rows;
 }
 

@@ -1,6 +1,6 @@
 // Scenario YAML schema (docs/render.md): one reader per config struct, keys = member names.
 #include <cmath>
-#include <opencv2/core/persistence.hpp>
+#include <opencv2/core.hpp>
 #include <stdexcept>
 
 #include "tools/render/scenario.h"

@@ -1,5 +1,6 @@
 #include "tools/render/scene_objects.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <random>
 

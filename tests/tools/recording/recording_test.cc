@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include "field_models/standard_fields.h"
 #include "vision/camera_presets.h"
@@ -137,6 +139,25 @@ TEST_F(RecordingTest, WriteReadRoundTripIsExact) {
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}),
               std::string(std::istreambuf_iterator<char>(b), {}))
         << file;
+  }
+}
+
+TEST_F(RecordingTest, RandomDoublesRoundTripExactly) {
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> exponent(-300.0, 300.0), unit(-1.0, 1.0);
+  Recording in;
+  in.camera = cameraPreset("adult").intrinsics;
+  for (int i = 0; i < 2000; ++i) {
+    const double x = unit(rng) * std::pow(10.0, exponent(rng));
+    const double y = unit(rng) * 10.0;
+    in.ground_truth.push_back({i, Pose2(x, y, unit(rng) * 3.0)});
+  }
+  writeRecording(in, dir_.string());
+  std::ofstream(dir_ / "frames.csv") << kFramesHeader;
+  const Recording out = readRecording(dir_.string());
+  ASSERT_EQ(out.ground_truth.size(), in.ground_truth.size());
+  for (std::size_t i = 0; i < in.ground_truth.size(); ++i) {
+    expectPose2Equal(out.ground_truth[i].field_T_robot, in.ground_truth[i].field_T_robot);
   }
 }
 

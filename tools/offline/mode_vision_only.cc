@@ -1,0 +1,124 @@
+#include "tools/offline/mode_vision_only.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <opencv2/imgcodecs.hpp>
+#include <stdexcept>
+
+#include "tools/offline/offline_output.h"
+#include "tools/offline/overlay.h"
+#include "tools/offline/vision_metrics.h"
+#include "tools/recording/csv.h"
+
+namespace houghloc {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunStats {
+  int processed = 0, skipped = 0, scored = 0;
+  long points = 0;
+  double total_ms = 0.0, max_ms = 0.0;
+  Eigen::Vector2d last_correction = Eigen::Vector2d::Zero();
+};
+
+void printSummary(const RunStats& s, const std::optional<VisionMetrics>& metrics,
+                  const std::string& out_dir) {
+  std::printf("houghloc-offline --vision-only -> %s\n", out_dir.c_str());
+  std::printf("  frames processed %d, skipped %d (missing/unreadable images), scored %d\n",
+              s.processed, s.skipped, s.scored);
+  if (s.processed > 0) {
+    std::printf("  points/frame %.1f   vision time mean %.3f ms, max %.3f ms\n",
+                static_cast<double>(s.points) / s.processed, s.total_ms / s.processed, s.max_ms);
+  }
+  std::printf("  camera correction at the end: roll %.3f deg, pitch %.3f deg\n",
+              s.last_correction.x() * 57.29578, s.last_correction.y() * 57.29578);
+  if (!metrics) {
+    std::printf("  no metrics (needs groundtruth.csv, truth/visible.csv and a field)\n");
+    return;
+  }
+  std::printf("  precision %.4f over %ld points\n", metrics->precision, metrics->points);
+  std::printf("  %-9s %8s %10s %8s %12s %12s\n", "band", "points", "precision", "recall",
+              "median err", "p95 err");
+  for (const VisionBandMetrics& b : metrics->bands) {
+    std::printf("  %.0f-%.0f m    %8ld %10.4f %8.4f %10.4f m %10.4f m\n", b.min_m, b.max_m,
+                b.points, b.precision, b.recall, b.median_error_m, b.p95_error_m);
+  }
+}
+
+}  // namespace
+
+int runVisionOnly(const OfflineContext& context) {
+  const Recording& rec = context.recording;
+  const fs::path out(context.out_dir);
+  CsvWriter points_csv((out / "points.csv").string(), {"t_us", "u", "v", "x_robot", "y_robot"});
+  CsvWriter timing_csv((out / "timing.csv").string(), {"t_us", "vision_ms", "points"});
+  if (context.options.overlay) fs::create_directories(out / "overlay");
+
+  const bool can_score = context.field && !rec.ground_truth.empty() && !rec.visible.empty();
+  std::optional<VisionMetricsAccumulator> metrics;
+  if (can_score) metrics.emplace(*context.field);
+
+  std::map<std::string, std::unique_ptr<VisionPipeline>> pipelines;  // per camera id
+  RunStats stats;
+  const int total = context.end_frame - context.first_frame;
+  for (int i = context.first_frame; i < context.end_frame; ++i) {
+    const FrameRecord& frame = rec.frames[static_cast<size_t>(i)];
+    std::string problem;
+    const std::optional<cv::Mat> image = loadFrameImage(context, frame, &problem);
+    if (!image) {
+      std::fprintf(stderr, "%swarning: %s\n", context.options.quiet ? "" : "\n", problem.c_str());
+      ++stats.skipped;
+      continue;
+    }
+    auto& pipeline = pipelines[frame.camera_id];
+    const CameraIntrinsics& intrinsics = rec.intrinsicsFor(frame);
+    if (!pipeline) pipeline = std::make_unique<VisionPipeline>(intrinsics, context.vision_config);
+    VisionResult result;
+    try {
+      result = pipeline->process(*image, frame.robot_T_camera, frame.t_us);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error((fs::path(rec.folder) / frame.image).string() + ": " + e.what());
+    }
+    ++stats.processed;
+    stats.points += static_cast<long>(result.ground.points.size());
+    stats.total_ms += result.diagnostics.time_total_ms;
+    stats.max_ms = std::max(stats.max_ms, result.diagnostics.time_total_ms);
+    stats.last_correction = result.diagnostics.pose_correction_rad;
+    for (const GroundPoint& p : result.ground.points) {
+      points_csv.writeRow({CsvWriter::format(frame.t_us), points_csv.format(p.pixel.x()),
+                           points_csv.format(p.pixel.y()), points_csv.format(p.p_robot.x()),
+                           points_csv.format(p.p_robot.y())});
+    }
+    timing_csv.writeRow({CsvWriter::format(frame.t_us),
+                         timing_csv.format(result.diagnostics.time_total_ms),
+                         CsvWriter::format(static_cast<std::int64_t>(result.ground.points.size()))});
+    if (metrics) {
+      if (const auto truth = groundTruthAt(rec.ground_truth, frame.t_us)) {
+        const CameraModel camera(intrinsics, frame.robot_T_camera);
+        metrics->addFrame(result.ground, *truth, visibleAt(rec.visible, frame.t_us), camera);
+        ++stats.scored;
+      }
+    }
+    if (context.options.overlay) {
+      const std::string name = fs::path(frame.image).stem().string() + ".png";
+      cv::imwrite((out / "overlay" / name).string(),
+                  drawVisionOverlay(*image, result, pipeline->camera()));
+    }
+    reportProgress(context, "vision", i - context.first_frame + 1, total);
+  }
+  points_csv.close();
+  timing_csv.close();
+  std::optional<VisionMetrics> summary;
+  if (metrics && stats.scored > 0) {
+    summary = metrics->result();
+    writeMetricsSection(context.out_dir, "vision", toJson(*summary));
+  }
+  printSummary(stats, summary, context.out_dir);
+  return 0;
+}
+
+}  // namespace houghloc
