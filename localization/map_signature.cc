@@ -94,8 +94,18 @@ MapSignature::MapSignature(const FieldModel& field, const MapSignatureConfig& co
     dominant_.push_back(i * step);
     std::vector<float> col =
         houghColumn(samples, i * step, transform_.config().rho_step_m, rho_max_);
-    for (float& v : col) v = v >= min_votes ? 1.0f : 0.0f;
-    masks_.push_back(std::move(col));
+    // A line is a narrow peak: lines across the direction spread their votes evenly over many
+    // rows, so each row is compared with the smallest count nearby (top-hat filter).
+    const int w = 4;
+    std::vector<float> mask(col.size(), 0.0f);
+    for (int j = 0; j < static_cast<int>(col.size()); ++j) {
+      float low = col[j];
+      for (int k = std::max(0, j - w); k <= std::min<int>(col.size() - 1, j + w); ++k) {
+        low = std::min(low, col[k]);
+      }
+      mask[j] = col[j] - low >= min_votes ? 1.0f : 0.0f;
+    }
+    masks_.push_back(std::move(mask));
   }
   grid_ = DistanceGrid(field, config.grid);
   features_ = FeatureLookup(field, config.lookup_resolution_m, config.grid.margin_m);

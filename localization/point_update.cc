@@ -69,7 +69,7 @@ Accumulated accumulate(const Pose2& pose, const Eigen::Matrix3d& gate_cov,
                             a.normal.dot(Eigen::Vector2d(-arm.y(), arm.x())));
     const double innovation_var = j.dot(gate_cov * j) + var;
     if (a.residual_m * a.residual_m > cfg.gate_chi2 * innovation_var) continue;
-    const double w = gp.weight * robustWeight(a.residual_m / cfg.point_sigma_m, cfg);
+    const double w = gp.weight * robustWeight(a.residual_m / std::sqrt(innovation_var), cfg);
     acc.jtj.noalias() += w * j * j.transpose();
     acc.jtr.noalias() += (w * a.residual_m) * j;
     acc.weight_sum += w;

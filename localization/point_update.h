@@ -18,10 +18,12 @@ struct PointUpdateConfig {
   /// leave unconstrained (e.g. heading when only the centre circle is seen); Huber is convex.
   enum class Kernel { kHuber, kCauchy };
   Kernel kernel = Kernel::kCauchy;
-  double kernel_sigmas = 2.0;   ///< kernel scale, in point_sigma_m
+  /// Kernel scale in innovation standard deviations sqrt(J P J^T + sigma^2): wide while the pose
+  /// is uncertain (large first steps), as tight as point_sigma_m once the iterations converge.
+  double kernel_sigmas = 2.0;
   int max_iterations = 6;       ///< Gauss-Newton iterations per frame
-  double converged_m = 5e-4;    ///< stop when a step moves less than this, m
-  double converged_rad = 5e-4;  ///< and turns less than this, rad
+  double converged_m = 1e-3;    ///< stop when a step moves less than this, m
+  double converged_rad = 1e-3;  ///< and turns less than this, rad
   /// Points along one line have correlated errors (camera pose, line width); their information is
   /// scaled so that no more than this many count as independent. Keeps covariances honest.
   double max_effective_points = 40.0;

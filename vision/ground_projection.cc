@@ -13,7 +13,8 @@ std::vector<SpotRay> spotRays(const CameraModel& camera, const std::vector<LineS
   for (const LineSpot& spot : spots) {
     const Eigen::Vector3d ray_robot = camera.pixelRay(spot.pixel.x(), spot.pixel.y());
     if (!ray_robot.allFinite()) continue;
-    rays.push_back({camera_R_robot * ray_robot, spot.pixel, spot.vertical_scan});
+    const Eigen::Vector3d ray_camera = camera_R_robot * ray_robot;
+    rays.push_back({ray_camera, spot.pixel, spot.vertical_scan});
   }
   return rays;
 }

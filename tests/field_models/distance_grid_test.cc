@@ -15,6 +15,10 @@ struct GridCase {
   double resolution_m;
 };
 
+void PrintTo(const GridCase& c, std::ostream* os) {
+  *os << c.field << " at " << c.resolution_m << " m";
+}
+
 class DistanceGridTest : public ::testing::TestWithParam<GridCase> {};
 
 // The distance is 1-Lipschitz and a bilinear lookup is a convex combination of the four nodes,

@@ -131,6 +131,8 @@ struct BadYaml {
   const char* expected;  ///< substring of the error message
 };
 
+void PrintTo(const BadYaml& c, std::ostream* os) { *os << c.label; }
+
 class BadYamlTest : public ::testing::TestWithParam<BadYaml> {};
 
 TEST_P(BadYamlTest, ErrorNamesFileAndEntry) {

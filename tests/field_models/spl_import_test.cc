@@ -95,6 +95,8 @@ struct Mutation {
   std::string expected;
 };
 
+void PrintTo(const Mutation& m, std::ostream* os) { *os << m.label; }
+
 class InvalidSplTest : public ::testing::TestWithParam<Mutation> {};
 
 TEST_P(InvalidSplTest, RejectedNamingTheKey) {

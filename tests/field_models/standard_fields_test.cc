@@ -20,6 +20,8 @@ struct TableRow {
   int corner_arcs;
 };
 
+void PrintTo(const TableRow& row, std::ostream* os) { *os << row.name; }
+
 const TableRow kTable[] = {
     {"spl", 9, 6, 0.05, 0.6, 2.2, 1.65, 4.0, 1.3, 0.1, false, 1.5, 0.7, 1.5, 0.1, 0.8, 0},
     {"spl2019", 9, 6, 0.05, 0, 0, 0.6, 2.2, 1.3, 0.1, false, 1.5, 0.7, 1.5, 0.1, 0.8, 0},

@@ -290,6 +290,33 @@ TEST(CameraModel, RationalAndThinPrismModelsMatchOpenCv) {
   }
 }
 
+TEST(CameraModel, ArbitraryPosesAndPixelsNeverCrashOrReturnNonFinite) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> angle(-4.0, 4.0), offset(-2.0, 2.0);
+  const double specials[] = {kNaN, std::numeric_limits<double>::infinity(), -1e300, -5e3, 0.0, 5e3,
+                             1e300};
+  for (const std::string& name : cameraPresetNames()) {
+    const CameraPreset preset = cameraPreset(name);
+    for (int trial = 0; trial < 30; ++trial) {
+      Pose3 pose{offset(rng), offset(rng), offset(rng), angle(rng), angle(rng), angle(rng)};
+      if (trial == 0) pose.pitch = kNaN;
+      const CameraModel cam(preset.intrinsics, pose);
+      ASSERT_EQ(static_cast<int>(cam.horizonRows().size()), cam.width());
+      for (double h : cam.horizonRows()) EXPECT_FALSE(std::isnan(h));
+      for (double u : specials) {
+        for (double v : specials) {
+          const auto g = cam.pixelToGround(u, v);
+          const auto w = cam.expectedLineWidthPx(u, v, 0.05);
+          const auto p = cam.project(Eigen::Vector3d(u, v, 0.0));
+          EXPECT_TRUE(!g || g->allFinite());
+          EXPECT_TRUE(!w || w->allFinite());
+          EXPECT_TRUE(!p || p->allFinite());
+        }
+      }
+    }
+  }
+}
+
 TEST(CameraModel, InvalidIntrinsicsThrow) {
   CameraIntrinsics in;
   in.distortion = {0.1, 0.2, 0.3};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "field_models/field_distance.h"
 
@@ -11,29 +12,38 @@ namespace houghloc::testing {
 cv::Mat drawFieldView(const CameraModel& camera, const FieldModel& field, const Pose2& field_T_robot,
                       const SyntheticStyle& style) {
   cv::Mat image(camera.height(), camera.width(), CV_8UC3);
-  const Pose3& pose = camera.pose();
-  const Eigen::Vector3d origin = pose.translation();
+  const Eigen::Vector3d origin = camera.pose().translation();
+  // Ground point of every pixel (NaN above the horizon), then colours with the pixel footprint
+  // taken from the neighbours as the anti-aliasing width.
+  std::vector<Eigen::Vector2d> ground(static_cast<size_t>(image.rows) * image.cols,
+                                      Eigen::Vector2d::Constant(std::nan("")));
   for (int v = 0; v < image.rows; ++v) {
     for (int u = 0; u < image.cols; ++u) {
       const Eigen::Vector3d ray = camera.pixelRay(u, v);
-      const Eigen::Vector3d ray_right = camera.pixelRay(u + 1, v);
-      const Eigen::Vector3d ray_down = camera.pixelRay(u, v + 1);
-      cv::Vec3f colour = style.background;
       if (ray.allFinite() && ray.z() < -1e-4) {
-        const Eigen::Vector2d p_robot = (origin - origin.z() / ray.z() * ray).head<2>();
+        ground[static_cast<size_t>(v) * image.cols + u] = (origin - origin.z() / ray.z() * ray).head<2>();
+      }
+    }
+  }
+  const auto at = [&](int u, int v) {
+    return ground[static_cast<size_t>(std::min(v, image.rows - 1)) * image.cols + std::min(u, image.cols - 1)];
+  };
+  for (int v = 0; v < image.rows; ++v) {
+    for (int u = 0; u < image.cols; ++u) {
+      const Eigen::Vector2d p_robot = at(u, v);
+      cv::Vec3f colour = style.background;
+      if (p_robot.allFinite()) {
         const Eigen::Vector2d p_field = field_T_robot.transform(p_robot);
         if (std::abs(p_field.x()) <= field.outerHalfLength() &&
             std::abs(p_field.y()) <= field.outerHalfWidth()) {
-          // Pixel footprint on the ground (m): anti-aliasing width of the line edges.
           double footprint = 0.01;
-          if (ray_right.z() < -1e-4 && ray_down.z() < -1e-4) {
-            const Eigen::Vector3d right = origin - origin.z() / ray_right.z() * ray_right;
-            const Eigen::Vector3d down = origin - origin.z() / ray_down.z() * ray_down;
-            footprint = std::max((right.head<2>() - p_robot).norm(), (down.head<2>() - p_robot).norm());
+          const Eigen::Vector2d right = at(u + 1, v), down = at(u, v + 1);
+          if (right.allFinite() && down.allFinite()) {
+            footprint = std::max((right - p_robot).norm(), (down - p_robot).norm());
           }
           const double distance = nearestFeature(field, p_field).distance_m;
-          const double coverage =
-              std::clamp((0.5 * field.line_width - distance) / std::max(footprint, 1e-4) + 0.5, 0.0, 1.0);
+          const double coverage = std::clamp(
+              (0.5 * field.line_width - distance) / std::max(footprint, 1e-4) + 0.5, 0.0, 1.0);
           colour = (1.0 - coverage) * cv::Vec3f(style.turf) + coverage * cv::Vec3f(style.line);
         }
       }

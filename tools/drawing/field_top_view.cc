@@ -133,9 +133,13 @@ void FieldTopView::drawAxes() {
 }
 
 void FieldTopView::drawTitle(const std::string& title) {
-  const double font = std::max(0.4, config_.margin_px / 60.0);
+  double font = std::max(0.4, config_.margin_px / 60.0);
   int baseline = 0;
-  const cv::Size size = cv::getTextSize(title, cv::FONT_HERSHEY_SIMPLEX, font, 1, &baseline);
+  cv::Size size = cv::getTextSize(title, cv::FONT_HERSHEY_SIMPLEX, font, 1, &baseline);
+  if (size.width > image_.cols - 10) {  // shrink a long title to fit rather than clip it
+    font *= (image_.cols - 10.0) / size.width;
+    size = cv::getTextSize(title, cv::FONT_HERSHEY_SIMPLEX, font, 1, &baseline);
+  }
   const cv::Point origin((image_.cols - size.width) / 2, (config_.margin_px + size.height) / 2);
   cv::putText(image_, title, origin, cv::FONT_HERSHEY_SIMPLEX, font, config_.text, 1, cv::LINE_AA);
 }

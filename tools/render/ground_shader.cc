@@ -112,8 +112,8 @@ Eigen::Vector3f GroundShader::turf(const Eigen::Vector2f& g, const Footprint& fp
   float fine = 0.0f;
   if (scene_.turf_texture) {
     fine = fine_.sample(g.x(), g.y(), size);
-    tex += 0.09f * fine + 0.05f * blotch_.sample(g.x(), g.y(), size) +
-           0.03f * large_.sample(g.x(), g.y(), size);
+    tex += 0.08f * fine + 0.03f * blotch_.sample(g.x(), g.y(), size) +
+           0.02f * large_.sample(g.x(), g.y(), size);
   }
   if (scene_.mowing_stripes) {
     // Box-filtered square wave of bands alternating along x.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <vector>
 
 #include "field_models/field_model.h"
@@ -14,7 +15,8 @@ struct Footprint {
   Eigen::Vector2f dv = Eigen::Vector2f::Zero();
   /// Width (m) of the footprint measured along a ground direction.
   float along(const Eigen::Vector2f& dir) const {
-    return std::hypot(dir.dot(du), dir.dot(dv));
+    const float a = dir.dot(du), b = dir.dot(dv);
+    return std::sqrt(a * a + b * b);
   }
 };
 

@@ -1,5 +1,6 @@
 #include "tools/render/primitives.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 

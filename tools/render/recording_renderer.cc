@@ -102,7 +102,7 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
   SceneObjects statics = makeGoals(job.field, sc.scene);
   statics.append(makePeople(job.field, sc.scene, box, sc.seed));
   const MovingObjects movers(sc, job.field);
-  const SensorModel sensor(sc.sensor, job.intrinsics.image_width, job.intrinsics.image_height);
+  SensorModel sensor(sc.sensor, job.intrinsics.image_width, job.intrinsics.image_height);
   const VisibilityCounter visibility(job.field);
   CameraModel camera(job.intrinsics, job.mount);
   std::mt19937 pose_noise(sc.seed * 19u + 1u);

@@ -56,15 +56,19 @@ SensorModel::SensorModel(const SensorConfig& config, int width, int height)
       vignette_(r, c) = static_cast<float>(1.0 - config.vignetting * r2);
     }
   }
+  cv::Mat1f pool(1, 1 << 22);
+  cv::RNG rng(0x5e75u);
+  rng.fill(pool, cv::RNG::NORMAL, 0.0, 1.0);
+  noise_pool_.assign(pool.begin(), pool.end());
 }
 
 cv::Mat3b SensorModel::apply(const cv::Mat3f& scene, const ExposureState& exposure,
-                             const Eigen::Vector2d& motion_px, std::uint64_t noise_seed) const {
-  cv::Mat3f img;
+                             const Eigen::Vector2d& motion_px, std::uint64_t noise_seed) {
+  cv::Mat3f& img = work_;
   if (scene.cols != width_ || scene.rows != height_) {
     cv::resize(scene, img, cv::Size(width_, height_), 0, 0, cv::INTER_AREA);  // box average
   } else {
-    img = scene.clone();
+    scene.copyTo(img);
   }
   if (config_.motion_blur && motion_px.norm() > 0.5) {
     cv::filter2D(img, img, -1, motionKernel(motion_px), cv::Point(-1, -1), 0.0,
@@ -73,23 +77,24 @@ cv::Mat3b SensorModel::apply(const cv::Mat3f& scene, const ExposureState& exposu
   if (config_.optics_blur_px > 0.0) {
     cv::GaussianBlur(img, img, cv::Size(), config_.optics_blur_px, 0.0, cv::BORDER_REFLECT);
   }
-  cv::Mat3f noise(height_, width_);
   cv::RNG rng(noise_seed);
-  rng.fill(noise, cv::RNG::NORMAL, 0.0, 1.0);
+  const size_t pool_mask = noise_pool_.size() - 1;  // a power of two
+  size_t next = rng.next() & pool_mask;
   const cv::Vec3f wb = whiteBalance(exposure.color_temperature_k);
   const float gain = static_cast<float>(exposure.gain);
   const float sigma0 = static_cast<float>(config_.noise_sigma);
   const float shot = static_cast<float>(config_.shot_noise);
-  cv::Mat3b out(height_, width_);
+  out_.create(height_, width_);
+  cv::Mat3b& out = out_;
   for (int r = 0; r < height_; ++r) {
     cv::Vec3f* p = img.ptr<cv::Vec3f>(r);
-    const cv::Vec3f* n = noise.ptr<cv::Vec3f>(r);
     const float* v = vignette_.ptr<float>(r);
     for (int c = 0; c < width_; ++c) {
       for (int k = 0; k < 3; ++k) {
         const float value = std::max(0.0f, p[c][k] * gain * wb[k] * v[c]);
         const float sigma = sigma0 + shot * std::sqrt(std::min(value, 255.0f) / 255.0f);
-        p[c][k] = value + sigma * n[c][k];
+        p[c][k] = value + sigma * noise_pool_[next];
+        next = (next + 1) & pool_mask;
       }
     }
     if (config_.yuv422) {
@@ -112,7 +117,7 @@ cv::Mat3b SensorModel::apply(const cv::Mat3f& scene, const ExposureState& exposu
       for (int k = 0; k < 3; ++k) o[c][k] = cv::saturate_cast<uchar>(p[c][k]);
     }
   }
-  return out;
+  return out.clone();
 }
 
 }  // namespace houghloc

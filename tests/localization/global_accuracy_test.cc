@@ -1,0 +1,46 @@
+// Issue 6 targets for GlobalHoughLocalizer alone, on synthetic frames from seeds not used for
+// tuning (tuning used seed 12345 / frame seeds 1000+).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "global_accuracy_fixture.h"
+
+namespace houghloc {
+namespace {
+
+class GlobalAccuracy : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(GlobalAccuracy, WideViewsFindTheTruthAndAreAccurate) {
+  for (const std::string view : {"kid-wide", "adult"}) {
+    AccuracyRun run;
+    run.field = GetParam();
+    run.view = view;
+    run.frames = 40;
+    run.seed = 42;
+    const AccuracySummary s = evaluateGlobal(run);
+    std::cout << s.describe(run.field + "/" + view) << "\n";
+    ASSERT_EQ(s.frames, run.frames);
+    EXPECT_GE(s.rate(s.ghl_any), 95.0) << view;
+    EXPECT_LE(median(s.position_errors_m), 0.03) << view;
+    EXPECT_LE(median(s.heading_errors_rad), 1.0 * M_PI / 180.0) << view;
+  }
+}
+
+TEST_P(GlobalAccuracy, ParallelOnlyFramesKeepTheTruthWithinThreeSigma) {
+  AccuracyRun run;
+  run.field = GetParam();
+  run.view = "nao-top";
+  run.frames = 100;
+  run.seed = 43;
+  const ParallelSummary s = evaluateParallelOnly(run);
+  std::cout << run.field << " parallel-only: " << s.within << "/" << s.frames << " within 3 sigma\n";
+  ASSERT_GE(s.frames, 50);
+  EXPECT_GE(s.within, 0.99 * s.frames);
+}
+
+INSTANTIATE_TEST_SUITE_P(StandardFields, GlobalAccuracy,
+                         ::testing::Values("spl", "spl2019", "kid", "adult", "msl"));
+
+}  // namespace
+}  // namespace houghloc

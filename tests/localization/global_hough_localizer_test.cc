@@ -1,0 +1,222 @@
+// GlobalHoughLocalizer::locate() end to end on hand-made and degenerate frames, and the
+// negative evidence.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "field_models/standard_fields.h"
+#include "localization/global_hough_localizer.h"
+#include "tools/synthetic/synthetic_ground_points.h"
+
+namespace houghloc {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+bool near(const Pose2& a, const Pose2& b, double m, double rad) {
+  return (a.translation() - b.translation()).norm() <= m &&
+         std::abs(angleDifference(a.theta, b.theta)) <= rad;
+}
+
+/// Correct up to the field's point symmetry (DESIGN §5.3).
+int rankOf(const std::vector<PoseHypothesis>& hs, const Pose2& truth) {
+  const Pose2 mirrored(-truth.x, -truth.y, truth.theta + M_PI);
+  for (std::size_t k = 0; k < hs.size(); ++k) {
+    if (near(hs[k].field_T_robot, truth, 0.10, 3 * kDeg) ||
+        near(hs[k].field_T_robot, mirrored, 0.10, 3 * kDeg)) {
+      return static_cast<int>(k);
+    }
+  }
+  return -1;
+}
+
+void expectWellFormed(const std::vector<PoseHypothesis>& hs, std::size_t max_count = 12) {
+  EXPECT_LE(hs.size(), max_count);
+  double sum = 0.0;
+  for (const auto& h : hs) {
+    EXPECT_TRUE(h.field_T_robot.isFinite());
+    EXPECT_TRUE(h.covariance.allFinite());
+    EXPECT_TRUE(std::isfinite(h.weight));
+    EXPECT_GT(h.covariance(0, 0), 0.0);
+    sum += h.weight;
+  }
+  if (!hs.empty()) EXPECT_NEAR(sum, 1.0, 1e-9);
+  for (std::size_t k = 1; k < hs.size(); ++k) EXPECT_LE(hs[k].score, hs[k - 1].score + 1e-9);
+}
+
+class LocalizerTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    field_ = new FieldModel(makeStandardField("spl"));
+    localizer_ = new GlobalHoughLocalizer(*field_);
+  }
+  static void TearDownTestSuite() {
+    delete localizer_;
+    delete field_;
+  }
+  static FieldModel* field_;
+  static GlobalHoughLocalizer* localizer_;
+};
+FieldModel* LocalizerTest::field_ = nullptr;
+GlobalHoughLocalizer* LocalizerTest::localizer_ = nullptr;
+
+TEST_F(LocalizerTest, DegenerateInputGivesNothingOrHeadingOnly) {
+  GroundPoints frame;
+  EXPECT_TRUE(localizer_->locate(frame).empty());  // no points
+  GroundPoint one;
+  one.p_robot = Eigen::Vector2d(1.0, 0.5);
+  frame.points = {one};
+  EXPECT_TRUE(localizer_->locate(frame).empty());  // one point
+  frame.points.assign(500, one);
+  EXPECT_TRUE(localizer_->locate(frame).empty());  // all on one spot
+  GroundPoint nan;
+  nan.p_robot = Eigen::Vector2d(std::numeric_limits<double>::quiet_NaN(), 1.0);
+  GroundPoint inf;
+  inf.p_robot = Eigen::Vector2d(std::numeric_limits<double>::infinity(), 1.0);
+  GroundPoint bad_weight = one;
+  bad_weight.weight = std::numeric_limits<double>::quiet_NaN();
+  frame.points = {nan, inf, bad_weight, nan};
+  EXPECT_TRUE(localizer_->locate(frame).empty());  // NaN points
+  GroundPolygon nan_region = {Eigen::Vector2d(0, 0), Eigen::Vector2d(std::nan(""), 1),
+                              Eigen::Vector2d(1, 1)};
+  frame.visible_regions = {nan_region};
+  EXPECT_TRUE(localizer_->locate(frame).empty());
+}
+
+TEST_F(LocalizerTest, NaNPointsAmongGoodOnesAreIgnored) {
+  const Pose2 truth(-2.0, 1.0, 20 * kDeg);
+  SyntheticConfig config;
+  config.view = viewModel("kid-wide");
+  SyntheticFrame f = generateFrame(*field_, truth, config);
+  GroundPoint nan;
+  nan.p_robot = Eigen::Vector2d(std::numeric_limits<double>::quiet_NaN(), 0.0);
+  for (int k = 0; k < 20; ++k) f.ground.points.push_back(nan);
+  const auto hs = localizer_->locate(f.ground);
+  expectWellFormed(hs);
+  EXPECT_GE(rankOf(hs, truth), 0);
+}
+
+TEST_F(LocalizerTest, HundredThousandRandomPointsDoNotBreakIt) {
+  GroundPoints frame;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-6.0, 6.0);
+  for (int k = 0; k < 100000; ++k) {
+    GroundPoint g;
+    g.p_robot = Eigen::Vector2d(u(rng), u(rng));
+    frame.points.push_back(g);
+  }
+  expectWellFormed(localizer_->locate(frame));
+}
+
+TEST_F(LocalizerTest, HundredThousandLinePointsStillLocate) {
+  const Pose2 truth(1.3, -0.4, -75 * kDeg);
+  SyntheticConfig config;
+  config.view = viewModel("kid-wide");
+  config.point_spacing_m = 0.0004;  // ~100 000 points
+  const SyntheticFrame f = generateFrame(*field_, truth, config);
+  ASSERT_GT(f.ground.size(), 50000u);
+  const auto hs = localizer_->locate(f.ground);
+  expectWellFormed(hs);
+  EXPECT_GE(rankOf(hs, truth), 0);
+}
+
+TEST_F(LocalizerTest, TwoPerpendicularLinesLocateAFieldCorner) {
+  // Noise-free points of the left touch line and the opponent goal line, seen from (3.6, 2.2).
+  const Pose2 truth(3.6, 2.2, 35 * kDeg);
+  GroundPoints frame;
+  const Pose2 robot_T_field = truth.inverse();
+  for (double x = 2.5; x <= 4.5; x += 0.04) {
+    GroundPoint g;
+    g.p_robot = robot_T_field.transform({x, 3.0});
+    frame.points.push_back(g);
+  }
+  for (double y = 1.5; y <= 3.0; y += 0.04) {
+    GroundPoint g;
+    g.p_robot = robot_T_field.transform({4.5, y});
+    frame.points.push_back(g);
+  }
+  const auto hs = localizer_->locate(frame);
+  expectWellFormed(hs);
+  const int rank = rankOf(hs, truth);
+  ASSERT_GE(rank, 0);
+  EXPECT_LE(rank, 1);  // the truth or its mirror image first
+  const Pose2 best = hs[rank].field_T_robot;
+  const Pose2 target = std::abs(best.x - truth.x) < 1.0 ? truth : Pose2(-3.6, -2.2, truth.theta + M_PI);
+  EXPECT_LT((best.translation() - target.translation()).norm(), 0.01);
+  EXPECT_LT(std::abs(angleDifference(best.theta, target.theta)), 0.2 * kDeg);
+  EXPECT_EQ(hs[rank].kind, HypothesisKind::kFull);
+}
+
+TEST_F(LocalizerTest, ParallelLinesOnlyGiveALargeVarianceAlongThem) {
+  // Only the left touch line in view (robot looking at it from 1.2 m), no visible region.
+  const Pose2 truth(0.7, 1.8, 80 * kDeg);
+  GroundPoints frame;
+  const Pose2 robot_T_field = truth.inverse();
+  for (double x = -0.3; x <= 1.9; x += 0.04) {
+    GroundPoint g;
+    g.p_robot = robot_T_field.transform({x, 3.0});
+    frame.points.push_back(g);
+  }
+  const auto hs = localizer_->locate(frame);
+  expectWellFormed(hs);
+  ASSERT_FALSE(hs.empty());
+  bool found = false;
+  for (const auto& h : hs) {
+    EXPECT_EQ(h.kind, HypothesisKind::kParallel);
+    const double along = h.line_direction.dot(h.covariance.topLeftCorner<2, 2>() * h.line_direction);
+    EXPECT_GT(std::sqrt(along), 0.3);
+    // The truth (or its mirror) lies on the hypothesis' line within 3 cm and 1 deg.
+    for (const Pose2& t : {truth, Pose2(-truth.x, -truth.y, truth.theta + M_PI)}) {
+      const Eigen::Vector2d d = t.translation() - h.field_T_robot.translation();
+      const Eigen::Vector2d n(-h.line_direction.y(), h.line_direction.x());
+      found |= std::abs(d.dot(n)) < 0.03 && std::abs(angleDifference(h.field_T_robot.theta, t.theta)) < kDeg;
+    }
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST_F(LocalizerTest, CentreCircleAloneLocatesUpToSymmetry) {
+  // Standing in the centre circle looking along the halfway line: circle and halfway line only.
+  const Pose2 truth(0.3, -0.2, 95 * kDeg);
+  SyntheticConfig config;
+  config.view = viewModel("nao-top");
+  config.view.max_range_m = 1.5;
+  config.marks = false;
+  const SyntheticFrame f = generateFrame(*field_, truth, config);
+  const auto hs = localizer_->locate(f.ground);
+  expectWellFormed(hs);
+  const int rank = rankOf(hs, truth);
+  ASSERT_GE(rank, 0);
+  EXPECT_LE(rank, 1);
+}
+
+TEST_F(LocalizerTest, NegativeEvidenceSeparatesFieldCornerFromInnerCorner) {
+  // A field corner seen from inside: the same points fit the T-junction of the halfway line
+  // and the touch line, but there the touch line would continue through the visible region.
+  const Pose2 truth(3.2, -2.1, -40 * kDeg);
+  SyntheticConfig config;
+  config.view = viewModel("nao-top");
+  config.seed = 11;
+  const SyntheticFrame f = generateFrame(*field_, truth, config);
+  WeightedPoints pts;
+  for (const auto& g : f.ground.points) {
+    pts.points.push_back(g.p_robot);
+    pts.weights.push_back(1.0);
+  }
+  const VisibilityEvidence evidence(f.ground, pts, NegativeEvidenceConfig{});
+  ASSERT_FALSE(evidence.empty());
+  EXPECT_LT(evidence.unseenLineLength(truth, localizer_->map()), 0.3);
+  EXPECT_LT(evidence.greenOutsideCarpet(truth, *field_), 0.1);
+  // Shift the view so that the seen corner is the T-junction (0, -3).
+  const Pose2 inner(truth.x - 4.5, truth.y, truth.theta);
+  const ScoringConfig scoring;
+  EXPECT_NEAR(scorePose(pts, inner, localizer_->map().grid(), scoring).score,
+              scorePose(pts, truth, localizer_->map().grid(), scoring).score,
+              0.1 * pts.totalWeight());  // positive evidence cannot tell them apart
+  EXPECT_GT(evidence.penalty(inner, localizer_->map()), 5.0 * (1.0 + evidence.penalty(truth, localizer_->map())));
+}
+
+}  // namespace
+}  // namespace houghloc

@@ -1,0 +1,113 @@
+#include "tools/bench/mcl_baseline.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace houghloc::bench {
+
+MonteCarloLocalizer::MonteCarloLocalizer(const FieldModel& field, const DistanceGrid& grid,
+                                         const MclConfig& config, std::uint32_t seed)
+    : field_(field), grid_(grid), config_(config), rng_(seed) {}
+
+Pose2 MonteCarloLocalizer::randomPose() {
+  std::uniform_real_distribution<double> ux(-field_.halfLength(), field_.halfLength());
+  std::uniform_real_distribution<double> uy(-field_.halfWidth(), field_.halfWidth());
+  std::uniform_real_distribution<double> ut(-M_PI, M_PI);
+  return Pose2(ux(rng_), uy(rng_), ut(rng_));
+}
+
+void MonteCarloLocalizer::reset(const Pose2& pose, double sigma_m, double sigma_rad) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  particles_.assign(config_.num_particles, Particle{});
+  for (Particle& p : particles_) {
+    p.pose = Pose2(pose.x + sigma_m * n(rng_), pose.y + sigma_m * n(rng_),
+                   pose.theta + sigma_rad * n(rng_));
+  }
+  estimate_ = pose;
+}
+
+void MonteCarloLocalizer::update(const Pose2& motion, const GroundPoints& points) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  const double trans = std::hypot(motion.x, motion.y), rot = std::abs(motion.theta);
+  const double st = config_.trans_noise_per_m * trans + config_.min_trans_noise_m;
+  const double sr =
+      config_.rot_noise_per_rad * rot + config_.rot_noise_per_m * trans + config_.min_rot_noise_rad;
+  const double sigma2 = config_.point_sigma_m * config_.point_sigma_m;
+  const double scale =
+      points.empty() ? 0.0 : config_.likelihood_points / static_cast<double>(points.size());
+  double max_log = -1e300, mean_likelihood = 0.0;
+  for (Particle& p : particles_) {
+    p.pose = p.pose *
+             Pose2(motion.x + st * n(rng_), motion.y + st * n(rng_), motion.theta + sr * n(rng_));
+    double log_l = 0.0;
+    for (const GroundPoint& gp : points.points) {
+      const double d = grid_.distance(p.pose.transform(gp.p_robot));
+      log_l +=
+          std::log((1.0 - config_.z_random) * std::exp(-0.5 * d * d / sigma2) + config_.z_random);
+    }
+    p.log_weight = scale * log_l;
+    max_log = std::max(max_log, p.log_weight);
+    mean_likelihood += std::exp(p.log_weight) / particles_.size();
+  }
+  if (points.empty()) {
+    // Nothing weighs the particles: follow the estimate with odometry and average around it.
+    estimate_ = estimate_ * motion;
+    weights_.assign(particles_.size(), 1.0);
+    computeEstimate(estimate_);
+    return;
+  }
+  // Augmented MCL: inject random particles when the short-term likelihood drops below the
+  // long-term one.
+  w_slow_ += config_.alpha_slow * (mean_likelihood - w_slow_);
+  w_fast_ += config_.alpha_fast * (mean_likelihood - w_fast_);
+  const double inject =
+      w_slow_ > 0.0 ? std::clamp(1.0 - w_fast_ / w_slow_, 0.0, config_.max_injection) : 0.0;
+  weights_.resize(particles_.size());
+  for (size_t i = 0; i < particles_.size(); ++i) {
+    weights_[i] = std::exp(particles_[i].log_weight - max_log);
+  }
+  size_t best = 0;
+  for (size_t i = 0; i < weights_.size(); ++i) best = weights_[i] > weights_[best] ? i : best;
+  computeEstimate(particles_[best].pose);
+  resample(inject);
+}
+
+void MonteCarloLocalizer::resample(double inject_share) {
+  double sum = 0.0;
+  for (double w : weights_) sum += w;
+  if (!(sum > 0.0)) return;
+  const int n = static_cast<int>(particles_.size());
+  std::vector<Particle> next;
+  next.reserve(n);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const int injected = static_cast<int>(inject_share * n);
+  const int drawn = n - injected;
+  // Low-variance (systematic) resampling: one random offset, equally spaced pointers.
+  const double step = sum / drawn;
+  double pointer = u01(rng_) * step, cumulative = weights_[0];
+  int i = 0;
+  for (int m = 0; m < drawn; ++m) {
+    while (pointer > cumulative && i < n - 1) cumulative += weights_[++i];
+    next.push_back(particles_[i]);
+    pointer += step;
+  }
+  for (int m = 0; m < injected; ++m) next.push_back(Particle{randomPose(), 0.0});
+  particles_ = std::move(next);
+}
+
+void MonteCarloLocalizer::computeEstimate(const Pose2& centre) {
+  double sw = 0.0, sx = 0.0, sy = 0.0, sc = 0.0, ss = 0.0;
+  for (size_t i = 0; i < particles_.size(); ++i) {
+    const Pose2& p = particles_[i].pose;
+    if (std::hypot(p.x - centre.x, p.y - centre.y) > config_.cluster_radius_m) continue;
+    const double w = weights_[i];
+    sw += w;
+    sx += w * p.x;
+    sy += w * p.y;
+    sc += w * std::cos(p.theta);
+    ss += w * std::sin(p.theta);
+  }
+  if (sw > 0.0) estimate_ = Pose2(sx / sw, sy / sw, std::atan2(ss, sc));
+}
+
+}  // namespace houghloc::bench
