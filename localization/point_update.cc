@@ -37,6 +37,7 @@ struct Accumulated {
   Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
   int used = 0;
   double weight_sum = 0.0;
+  int processed = 0;  ///< valid points visited
   int inliers = 0;
   double log_likelihood_sum = 0.0;
 };
@@ -45,14 +46,16 @@ struct Accumulated {
 /// likelihood statistics (ungated) used for hypothesis weights.
 Accumulated accumulate(const Pose2& pose, const Eigen::Matrix3d& gate_cov,
                        const std::vector<GroundPoint>& points, const FeatureIndex& index,
-                       const PointUpdateConfig& cfg) {
+                       const PointUpdateConfig& cfg, size_t stride) {
   Accumulated acc;
   const double var = cfg.point_sigma_m * cfg.point_sigma_m;
   const double inv_lik_var = 1.0 / (cfg.likelihood_sigma_m * cfg.likelihood_sigma_m);
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
-  for (const GroundPoint& gp : points) {
+  for (size_t i = 0; i < points.size(); i += stride) {
+    const GroundPoint& gp = points[i];
     const Eigen::Vector2d& q = gp.p_robot;
     if (!q.allFinite() || !(gp.weight > 0.0) || !std::isfinite(gp.weight)) continue;
+    ++acc.processed;
     const Eigen::Vector2d arm(c * q.x() - s * q.y(), s * q.x() + c * q.y());
     const Eigen::Vector2d p = arm + Eigen::Vector2d(pose.x, pose.y);
     Association a;
@@ -95,9 +98,16 @@ PointUpdateResult updateWithGroundPoints(const GaussianPose& prior,
   Pose2 x = prior.mean;
   Eigen::Matrix3d gate_cov = prior.covariance;
   Eigen::Matrix3d info = prior_info;
+  // Iterations run on an evenly strided subset (information is capped at max_effective_points
+  // anyway); the last pass uses every point for the final step and the statistics.
+  const size_t stride = static_cast<size_t>(
+      std::ceil(points.size() / std::max(1.0, static_cast<double>(cfg.max_iteration_points))));
+  const int max_iterations = std::max(1, cfg.max_iterations);
   Accumulated acc;
-  for (int it = 0; it < std::max(1, cfg.max_iterations); ++it) {
-    acc = accumulate(x, gate_cov, points, index, cfg);
+  bool converged = false;
+  for (int it = 0; it < max_iterations; ++it) {
+    const bool final_pass = stride <= 1 || converged || it == max_iterations - 1;
+    acc = accumulate(x, gate_cov, points, index, cfg, final_pass ? 1 : stride);
     result.iterations = it + 1;
     if (acc.used < cfg.min_points) break;
     const double scale = std::min(1.0, cfg.max_effective_points / std::max(acc.weight_sum, 1e-9));
@@ -110,7 +120,11 @@ PointUpdateResult updateWithGroundPoints(const GaussianPose& prior,
     result.corrected = true;
     // Later iterations gate with the shrinking posterior, which rejects more outliers.
     gate_cov = informationOf(info);
-    if (step.head<2>().norm() < cfg.converged_m && std::abs(step.z()) < cfg.converged_rad) break;
+    converged = step.head<2>().norm() < cfg.converged_m && std::abs(step.z()) < cfg.converged_rad;
+    // A hypothesis that explains few points is judged by its likelihood, not polished.
+    converged = converged || acc.used < cfg.poor_association_share * acc.processed;
+    if (converged && (stride <= 1 || final_pass)) break;
+    if (final_pass && stride > 1) break;
   }
   if (result.corrected) {
     const Eigen::Matrix3d cov = informationOf(info);
@@ -123,9 +137,9 @@ PointUpdateResult updateWithGroundPoints(const GaussianPose& prior,
   }
   result.num_associated = acc.used;
   result.num_inliers = acc.inliers;
-  if (result.num_points > 0) {
-    result.inlier_share = static_cast<double>(acc.inliers) / result.num_points;
-    result.mean_log_likelihood = acc.log_likelihood_sum / result.num_points;
+  if (acc.processed > 0) {
+    result.inlier_share = static_cast<double>(acc.inliers) / acc.processed;
+    result.mean_log_likelihood = acc.log_likelihood_sum / acc.processed;
   }
   return result;
 }

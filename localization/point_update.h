@@ -21,9 +21,13 @@ struct PointUpdateConfig {
   /// Kernel scale in innovation standard deviations sqrt(J P J^T + sigma^2): wide while the pose
   /// is uncertain (large first steps), as tight as point_sigma_m once the iterations converge.
   double kernel_sigmas = 2.0;
-  int max_iterations = 6;       ///< Gauss-Newton iterations per frame
-  double converged_m = 1e-3;    ///< stop when a step moves less than this, m
-  double converged_rad = 1e-3;  ///< and turns less than this, rad
+  int max_iterations = 6;
+  /// Iterations before the last one use an evenly strided subset of at most this many points.
+  int max_iteration_points = 150;
+  /// Fewer associated points than this share: one more (final) pass only, no polishing.
+  double poor_association_share = 0.25;  ///< Gauss-Newton iterations per frame
+  double converged_m = 1e-3;             ///< stop when a step moves less than this, m
+  double converged_rad = 1e-3;           ///< and turns less than this, rad
   /// Points along one line have correlated errors (camera pose, line width); their information is
   /// scaled so that no more than this many count as independent. Keeps covariances honest.
   double max_effective_points = 40.0;

@@ -41,7 +41,7 @@ LensDistortion::LensDistortion(DistortionModel model, const std::vector<double>&
       throw std::invalid_argument("tilted-sensor distortion (tau_x, tau_y) is not supported");
     }
   }
-  std::copy(coefficients.begin(), coefficients.begin() + std::min<std::size_t>(n, 12), k_);
+  for (std::size_t i = 0; i < std::min<std::size_t>(n, 12); ++i) k_[i] = coefficients[i];
   computeValidFieldAngle();
 }
 

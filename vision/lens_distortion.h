@@ -41,17 +41,18 @@ class LensDistortion {
  private:
   /// OpenCV's pinhole distortion of a normalized point; `jacobian` (optional) receives its
   /// derivative for Newton's method.
-  Eigen::Vector2d distortPinhole(const Eigen::Vector2d& undistorted,
+  Eigen::Vector2d distortPinhole(const Eigen::Vector2d& p,
                                  Eigen::Matrix2d* jacobian = nullptr) const;
   /// r (1 + k1 r^2 + ...) / (1 + k4 r^2 + ...) without tangential or prism terms.
   double radialPinhole(double r) const;
   /// theta (1 + k1 theta^2 + k2 theta^4 + k3 theta^6 + k4 theta^8).
   double radialFisheye(double theta) const;
-  double radial(double angle_or_r) const;
-  double radialDerivative(double angle_or_r) const;
-  /// Newton from `start` on the full pinhole model; none when it does not converge.
-  std::optional<Eigen::Vector2d> newtonPinhole(const Eigen::Vector2d& distorted,
-                                               Eigen::Vector2d start) const;
+  /// radialPinhole(r = tan theta) or radialFisheye(theta), by model.
+  double radial(double x) const;
+  double radialDerivative(double x) const;
+  /// Undistorted point of the distorted point d by Newton from p on the full pinhole model; none
+  /// when it does not converge.
+  std::optional<Eigen::Vector2d> newtonPinhole(const Eigen::Vector2d& d, Eigen::Vector2d p) const;
   void computeValidFieldAngle();
   std::optional<Eigen::Vector3d> undistortPinhole(const Eigen::Vector2d& distorted) const;
   std::optional<Eigen::Vector3d> undistortFisheye(const Eigen::Vector2d& distorted) const;

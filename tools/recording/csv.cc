@@ -80,9 +80,7 @@ int CsvTable::column(const std::string& name) const {
                        "' in the header");
 }
 
-const std::string& CsvTable::text(const CsvRow& row, int column) const {
-  return row.fields.at(column);
-}
+const std::string& CsvTable::text(const CsvRow& row, int column) { return row.fields.at(column); }
 
 double CsvTable::number(const CsvRow& row, int column) const {
   const std::string& field = text(row, column);
@@ -106,7 +104,7 @@ std::int64_t CsvTable::integer(const CsvRow& row, int column) const {
   const char* begin = field.c_str();
   char* end = nullptr;
   errno = 0;
-  const long long value = std::strtoll(begin, &end, 10);
+  const std::int64_t value = std::strtoll(begin, &end, 10);
   if (field.empty() || end != begin + field.size() || errno == ERANGE) {
     fail(row, "column '" + header_[column] + "': '" + field + "' is not an integer");
   }

@@ -33,7 +33,7 @@ class CsvTable {
 
   /// Field accessors; each throws RecordingError naming file, line and column when the field is
   /// not of the expected type (numbers must be finite; t_us an integer).
-  const std::string& text(const CsvRow& row, int column) const;
+  static const std::string& text(const CsvRow& row, int column);
   double number(const CsvRow& row, int column) const;
   /// Empty field -> none; otherwise as number().
   std::optional<double> optionalNumber(const CsvRow& row, int column) const;
@@ -58,7 +58,7 @@ class CsvWriter {
 
   /// Formats a finite double exactly (see above); throws RecordingError for NaN or infinity.
   std::string format(double value) const;
-  static std::string format(std::int64_t value) { return std::to_string(value); }
+  std::string format(std::int64_t value) const { return std::to_string(value); }
   /// Writes one row after checking a text field can be read back unchanged (no commas, line breaks
   /// or surrounding spaces, no leading `#` in the first column); throws RecordingError otherwise.
   void writeRow(const std::vector<std::string>& fields);

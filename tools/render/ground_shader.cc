@@ -41,7 +41,8 @@ RoomBox makeRoomBox(const FieldModel& field, const SceneConfig& scene) {
 GroundShader::GroundShader(const FieldModel& field, const SceneConfig& scene, const RoomBox& room,
                            std::uint32_t seed)
     : field_(field), scene_(scene), room_(room) {
-  fine_ = NoiseTexture(512, 0.006, 0.7, seed * 7u + 1u);  // turf fibres
+  blades_ = NoiseTexture(512, 0.0015, 0.6, seed * 7u + 6u);  // single blades, close up
+  fine_ = NoiseTexture(512, 0.006, 0.7, seed * 7u + 1u);     // turf fibres
   blotch_ = NoiseTexture(256, 0.03, 2.5, seed * 7u + 2u); // tufts, dirt
   large_ = NoiseTexture(64, 0.25, 2.0, seed * 7u + 3u);   // wear, uneven pile
   field_lines_.addField(field);
@@ -112,6 +113,8 @@ Eigen::Vector3f GroundShader::turf(const Eigen::Vector2f& g, const Footprint& fp
   float fine = 0.0f;
   if (scene_.turf_texture) {
     fine = fine_.sample(g.x(), g.y(), size);
+    // Blades only matter close up (a footprint of a few mm); skip them farther away.
+    if (size < 0.01f) tex += 0.08f * (1.0f - 100.0f * size) * blades_.sample(g.x(), g.y(), size);
     tex += 0.08f * fine + 0.03f * blotch_.sample(g.x(), g.y(), size) +
            0.02f * large_.sample(g.x(), g.y(), size);
   }

@@ -54,7 +54,7 @@ class GroundShader {
   RoomBox room_;
   LinePainter field_lines_, court_lines_;
   std::vector<Eigen::Vector3f> court_colours_;
-  NoiseTexture fine_, blotch_, large_;
+  NoiseTexture blades_, fine_, blotch_, large_;
   cv::Mat1f light_map_;
   float light_res_ = 0.2f;
 };

@@ -50,7 +50,7 @@ Eigen::Vector3f RoomShader::wall(int w, float s, float z) const {
                                              z < d.z0 + d.frame || z > d.z1 - d.frame);
     colour = on_frame ? Eigen::Vector3f(60, 60, 60) : d.bgr;
   }
-  return colour * (1.0f + 0.04f * texture_.sample(s, z, 0.0f));
+  return colour * (1.0f + 0.025f * texture_.sample(s, z, 0.05f));
 }
 
 Eigen::Vector3f RoomShader::ceiling(float x, float y) const {

@@ -1,0 +1,49 @@
+#include "vision_test_views.h"
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+#include "field_models/field_distance.h"
+#include "field_models/standard_fields.h"
+#include "vision/camera_model.h"
+
+namespace houghloc::testing {
+
+const TestView& testView(const std::string& preset, const std::string& field, const Pose2& pose,
+                         const SyntheticStyle& style) {
+  static std::map<std::string, TestView> cache;
+  std::ostringstream key;
+  key << preset << '|' << field << '|' << pose.x << ',' << pose.y << ',' << pose.theta << '|'
+      << style.gradient << ',' << style.noise_sigma << ',' << style.seed << ','
+      << int(style.turf[0]) << int(style.turf[1]) << int(style.turf[2]);
+  auto it = cache.find(key.str());
+  if (it != cache.end()) return it->second;
+  TestView view;
+  view.preset = cameraPreset(preset);
+  view.field = makeStandardField(field);
+  view.field_T_robot = pose;
+  const CameraModel camera(view.preset.intrinsics, view.preset.robot_T_camera);
+  view.image = drawFieldView(camera, view.field, pose, style);
+  return cache.emplace(key.str(), std::move(view)).first->second;
+}
+
+PointScore scorePoints(const TestView& view, const std::vector<Eigen::Vector2d>& p_robot,
+                       double max_distance_m) {
+  PointScore score;
+  std::vector<double> errors;
+  for (const Eigen::Vector2d& p : p_robot) {
+    errors.push_back(nearestFeature(view.field, view.field_T_robot.transform(p)).distance_m);
+  }
+  score.points = errors.size();
+  if (errors.empty()) return score;
+  score.precision = static_cast<double>(std::count_if(errors.begin(), errors.end(),
+                                                      [&](double e) { return e <= max_distance_m; })) /
+                    errors.size();
+  std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+  score.median_error_m = errors[errors.size() / 2];
+  return score;
+}
+
+}  // namespace houghloc::testing
