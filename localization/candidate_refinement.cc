@@ -102,29 +102,30 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
       stretches.push_back({s_values[i], s_values[i], scores[i]});
     }
   }
-  std::sort(stretches.begin(), stretches.end(),
-            [](const Stretch& a, const Stretch& b) { return a.top > b.top; });
-  std::vector<PoseHypothesis> out;
-  for (const Stretch& stretch : stretches) {
-    if (out.size() >= 3) break;
-    const Eigen::Vector2d t = t0 + 0.5 * (stretch.begin + stretch.end) * u;
-    PoseHypothesis h = candidate;
-    const RefinementResult r = refinePose(points, Pose2(t.x(), t.y(), theta), map_.features(),
-                                          config_.refinement, u);
-    h.field_T_robot = r.field_T_robot;
-    // Large variance along the lines, covering the stretch (+ one scan step each side).
-    const double along = 0.25 * (stretch.end - stretch.begin + 2.0 * step) + 0.3;
-    const Eigen::Matrix2d p = Eigen::Matrix2d::Identity() - u * u.transpose();
-    h.covariance = r.covariance;
-    h.covariance.topLeftCorner<2, 2>() =
-        p * r.covariance.topLeftCorner<2, 2>() * p + along * along * u * u.transpose();
-    h.covariance.topRightCorner<2, 1>() = p * r.covariance.topRightCorner<2, 1>();
-    h.covariance.bottomLeftCorner<1, 2>() = h.covariance.topRightCorner<2, 1>().transpose();
-    h.rms_m = r.rms_m;
-    finish(h, points, evidence);
-    out.push_back(h);
-  }
-  return out;
+  if (stretches.empty()) return {};
+  // One Gaussian per line (the paper's M = 1 case): centred on the span of all stretches where
+  // the points fit, with a standard deviation along the lines covering that whole span.
+  const double begin = stretches.front().begin, end = stretches.back().end;
+  const Eigen::Vector2d t = t0 + 0.5 * (begin + end) * u;
+  PoseHypothesis h = candidate;
+  const RefinementResult r =
+      refinePose(points, Pose2(t.x(), t.y(), theta), map_.features(), config_.refinement, u);
+  h.field_T_robot = r.field_T_robot;
+  const double along = 0.25 * (end - begin + 2.0 * step) + 0.3;
+  const Eigen::Matrix2d p = Eigen::Matrix2d::Identity() - u * u.transpose();
+  h.covariance = r.covariance;
+  h.covariance.topLeftCorner<2, 2>() =
+      p * r.covariance.topLeftCorner<2, 2>() * p + along * along * u * u.transpose();
+  h.covariance.topRightCorner<2, 1>() = p * r.covariance.topRightCorner<2, 1>();
+  h.covariance.bottomLeftCorner<1, 2>() = h.covariance.topRightCorner<2, 1>().transpose();
+  h.covariance.topLeftCorner<2, 2>() += config_.parallel_floor_m * config_.parallel_floor_m * p;
+  h.covariance(2, 2) += config_.parallel_floor_rad * config_.parallel_floor_rad;
+  h.rms_m = r.rms_m;
+  finish(h, points, evidence);
+  // The score is that of the best stretch (the mean may sit between stretches).
+  h.score = std::max(h.score, stretches.front().top);
+  for (const Stretch& st : stretches) h.score = std::max(h.score, st.top);
+  return {h};
 }
 
 void GlobalHoughLocalizer::finish(PoseHypothesis& h, const WeightedPoints& points,

@@ -58,8 +58,8 @@ FeatureLookup::Residual FeatureLookup::residual(const Eigen::Vector2d& p) const 
   }
   const Eigen::Vector2d d = p - q;
   out.distance_m = d.norm();
-  out.direction = out.distance_m > 1e-12 ? Eigen::Vector2d(d / out.distance_m)
-                                         : Eigen::Vector2d::Zero();
+  out.direction =
+      out.distance_m > 1e-12 ? Eigen::Vector2d(d / out.distance_m) : Eigen::Vector2d::Zero();
   out.valid = true;
   return out;
 }

@@ -16,19 +16,22 @@ namespace houghloc {
 
 /// Everything GlobalHoughLocalizer can be tuned with (YAML section `global:`, DESIGN §2).
 struct GlobalHoughConfig {
-  double max_range_m = 8.0;              ///< points farther than this are dropped
-  std::size_t max_points = 1500;         ///< larger inputs are subsampled evenly
-  std::size_t prescore_points = 80;      ///< points used to pre-score the raw candidates
-  std::size_t min_points = 6;            ///< fewer points: no hypothesis
-  double min_spread_m = 0.1;             ///< std dev along the points' main axis, else none
-  double min_observed_weight = 4.0;      ///< point weight on lines across a direction for it to
-                                         ///< count as observed (else the pose is kParallel)
-  double line_scan_step_m = 0.1;         ///< step of the scan along parallel lines
-  double line_scan_tolerance = 0.1;      ///< positions within this share of the best score are
-                                         ///< equally likely along the lines
-  int max_line_scans = 4;                ///< parallel-only candidates scanned per frame
-  bool use_circle = true;                ///< beyond the paper: centre-circle candidates
-  bool use_marks = true;                 ///< beyond the paper: penalty-mark candidates
+  double max_range_m = 8.0;           ///< points farther than this are dropped
+  std::size_t max_points = 1500;      ///< larger inputs are subsampled evenly
+  std::size_t prescore_points = 80;   ///< points used to pre-score the raw candidates
+  std::size_t min_points = 6;         ///< fewer points: no hypothesis
+  double min_spread_m = 0.1;          ///< std dev along the points' main axis, else none
+  double min_observed_weight = 4.0;   ///< point weight on lines across a direction for it to
+                                      ///< count as observed (else the pose is kParallel)
+  double line_scan_step_m = 0.1;      ///< step of the scan along parallel lines
+  double line_scan_tolerance = 0.2;   ///< positions within this share of the best score are
+                                      ///< equally likely along the lines
+  int max_line_scans = 12;            ///< parallel-only candidates scanned per frame
+  double parallel_floor_m = 0.03;     ///< added across the lines to a 1-D hypothesis' std dev:
+                                      ///< its heading error moves the line along its length
+  double parallel_floor_rad = 0.015;  ///< same for the heading
+  bool use_circle = true;             ///< beyond the paper: centre-circle candidates
+  bool use_marks = true;              ///< beyond the paper: penalty-mark candidates
 
   MapSignatureConfig map;
   OrientationConfig orientation;

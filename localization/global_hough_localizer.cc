@@ -12,7 +12,7 @@ GlobalHoughLocalizer::GlobalHoughLocalizer(const FieldModel& field, const Global
 std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& frame) const {
   const WeightedPoints points = preparePoints(frame);
   if (!hasLineSupport(points)) return {};
-  const HoughTransform sensor = sensorTransform(points);                   // step 1
+  const HoughTransform sensor = sensorTransform(points);                             // step 1
   const std::vector<OrientationCandidate> headings = orientationCandidates(sensor);  // step 2
   if (headings.empty()) return {};
   std::vector<PoseHypothesis> candidates;
@@ -89,8 +89,7 @@ HoughTransform GlobalHoughLocalizer::sensorTransform(const WeightedPoints& point
 
 std::vector<OrientationCandidate> GlobalHoughLocalizer::orientationCandidates(
     const HoughTransform& sensor) const {
-  return findOrientationCandidates(orientationProfile(sensor), map_.profile(),
-                                   config_.orientation);
+  return findOrientationCandidates(orientationProfile(sensor), map_.profile(), config_.orientation);
 }
 
 std::vector<std::vector<TranslationConstraint>> GlobalHoughLocalizer::translationConstraints(
@@ -112,8 +111,8 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::landmarkPoses(
     for (const Arc2& circle : map_.circles()) {
       const auto seen = fitCircle(points, circle.radius, config_.landmarks);
       if (seen) {
-        append(landmarkCandidates(seen->center, circle.center, headings,
-                                  HypothesisSource::kCircle, seen->support));
+        append(landmarkCandidates(seen->center, circle.center, headings, HypothesisSource::kCircle,
+                                  seen->support));
       }
     }
   }
@@ -143,8 +142,7 @@ bool GlobalHoughLocalizer::onCarpet(const Pose2& pose) const {
 }
 
 double GlobalHoughLocalizer::totalScore(const Pose2& pose, const WeightedPoints& points,
-                                        const VisibilityEvidence& evidence,
-                                        double* penalty) const {
+                                        const VisibilityEvidence& evidence, double* penalty) const {
   const double p = evidence.penalty(pose, map_);
   if (penalty != nullptr) *penalty = p;
   return scorePose(points, pose, map_.grid(), config_.scoring).score - p;

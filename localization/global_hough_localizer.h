@@ -35,8 +35,8 @@ class GlobalHoughLocalizer {
   std::vector<std::vector<TranslationConstraint>> translationConstraints(
       const WeightedPoints& points, double theta_r) const;
   /// Beyond the paper: poses from the centre circle and the penalty marks.
-  std::vector<PoseHypothesis> landmarkPoses(const WeightedPoints& points,
-                                            const std::vector<OrientationCandidate>& headings) const;
+  std::vector<PoseHypothesis> landmarkPoses(
+      const WeightedPoints& points, const std::vector<OrientationCandidate>& headings) const;
   /// Step 4 scoring: score and inlier share of every candidate against the whole map.
   void scoreCandidates(std::vector<PoseHypothesis>& candidates, const WeightedPoints& points) const;
   /// Step 4 refinement of one survivor: Gauss-Newton, observability (kParallel when only parallel

@@ -1,7 +1,6 @@
 #include "localization/landmarks.h"
 
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -38,7 +37,8 @@ std::optional<CircleObservation> fitCircle(const WeightedPoints& points, double 
   const int steps = std::max(16, static_cast<int>(std::ceil(2.0 * M_PI * radius / cell)));
   std::vector<Eigen::Vector2d> ring(steps);
   for (int k = 0; k < steps; ++k) {
-    ring[k] = radius * Eigen::Vector2d(std::cos(2 * M_PI * k / steps), std::sin(2 * M_PI * k / steps));
+    ring[k] =
+        radius * Eigen::Vector2d(std::cos(2 * M_PI * k / steps), std::sin(2 * M_PI * k / steps));
   }
   int best = -1;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -90,7 +90,8 @@ std::vector<Eigen::Vector2d> findMarkBlobs(const WeightedPoints& points, double 
     const long long r = static_cast<long long>(std::floor(p.y() / cell)) + dr;
     return c * 1000003LL + r;
   };
-  for (int i = 0; i < static_cast<int>(points.size()); ++i) grid[key(points.points[i], 0, 0)].push_back(i);
+  for (int i = 0; i < static_cast<int>(points.size()); ++i)
+    grid[key(points.points[i], 0, 0)].push_back(i);
   const double blob_radius = 0.5 * mark_size + config.mark_link_m;
   std::vector<char> used(points.size(), 0);
   for (int i = 0; i < static_cast<int>(points.size()); ++i) {

@@ -19,7 +19,7 @@ struct LandmarkConfig {
   double mark_link_m = 0.05;         ///< extra extent allowed around a mark for noise
   double mark_isolation_m = 0.35;    ///< no other point this close to a mark blob
   int mark_min_points = 3;
-  int max_marks = 4;                 ///< mark blobs used per frame
+  int max_marks = 4;  ///< mark blobs used per frame
 };
 
 /// A circle of known radius found in the points (robot frame).

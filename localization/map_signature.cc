@@ -46,10 +46,10 @@ WeightedPoints sampleMapLines(const FieldModel& field, double spacing_m, bool in
   if (include_marks) {
     for (const Mark& m : field.marks) {
       const double h = 0.5 * m.size;
-      sampleSegment({m.center - Eigen::Vector2d(h, 0), m.center + Eigen::Vector2d(h, 0)},
-                    spacing_m, out);
-      sampleSegment({m.center - Eigen::Vector2d(0, h), m.center + Eigen::Vector2d(0, h)},
-                    spacing_m, out);
+      sampleSegment({m.center - Eigen::Vector2d(h, 0), m.center + Eigen::Vector2d(h, 0)}, spacing_m,
+                    out);
+      sampleSegment({m.center - Eigen::Vector2d(0, h), m.center + Eigen::Vector2d(0, h)}, spacing_m,
+                    out);
     }
   }
   return out;

@@ -11,13 +11,13 @@
 namespace houghloc {
 
 struct MapSignatureConfig {
-  HoughConfig hough;                   ///< must equal the sensor transform's discretisation
-  double sample_spacing_m = 0.02;      ///< map lines and arcs are sampled like sensor points
-  double dominant_share = 0.3;         ///< maxima of m(theta) above this share of the top one
-  double mask_min_line_m = 0.25;       ///< a map rho row counts as "line" from this much line
-  double evidence_spacing_m = 0.10;    ///< spacing of the samples used for negative evidence
-  double lookup_resolution_m = 0.05;   ///< cells of the nearest-feature lookup (refinement)
-  DistanceGridConfig grid;             ///< scoring grid (shared with the exhaustive baseline)
+  HoughConfig hough;                  ///< must equal the sensor transform's discretisation
+  double sample_spacing_m = 0.02;     ///< map lines and arcs are sampled like sensor points
+  double dominant_share = 0.3;        ///< maxima of m(theta) above this share of the top one
+  double mask_min_line_m = 0.25;      ///< a map rho row counts as "line" from this much line
+  double evidence_spacing_m = 0.10;   ///< spacing of the samples used for negative evidence
+  double lookup_resolution_m = 0.05;  ///< cells of the nearest-feature lookup (refinement)
+  DistanceGridConfig grid;            ///< scoring grid (shared with the exhaustive baseline)
 };
 
 /// Everything about a map that the localizer needs, computed once per map (paper: HT_M and

@@ -63,7 +63,9 @@ VisibilityEvidence::VisibilityEvidence(const GroundPoints& frame, const Weighted
   }
   // Seen line length ~ occupied cells * cell size; density converts metres to point weight.
   density_ = occupied_count > 0 ? points.totalWeight() / (occupied_count * config.raster_m) : 0.0;
-  const int stride = std::max(1, static_cast<int>(std::lround(config.green_spacing_m / config.raster_m)));
+  const int stride =
+      std::max(1, static_cast<int>(std::lround(config.green_spacing_m / config.raster_m)));
+  green_cell_area_ = (stride * config.raster_m) * (stride * config.raster_m);
   for (int r = stride / 2; r < rows_; r += stride) {
     for (int c = stride / 2; c < cols_; c += stride) {
       if (cells_[static_cast<std::size_t>(r) * cols_ + c] & 1) {
@@ -103,8 +105,10 @@ void VisibilityEvidence::rasterise(const std::vector<GroundPolygon>& polygons) {
       }
       std::sort(crossings.begin(), crossings.end());
       for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
-        const int c0 = std::max(0, static_cast<int>(std::ceil((crossings[k] - origin_.x()) / cell - 0.5)));
-        const int c1 = std::min(cols_ - 1, static_cast<int>(std::floor((crossings[k + 1] - origin_.x()) / cell - 0.5)));
+        const int c0 =
+            std::max(0, static_cast<int>(std::ceil((crossings[k] - origin_.x()) / cell - 0.5)));
+        const int c1 = std::min(
+            cols_ - 1, static_cast<int>(std::floor((crossings[k + 1] - origin_.x()) / cell - 0.5)));
         for (int c = c0; c <= c1; ++c) cells_[static_cast<std::size_t>(r) * cols_ + c] |= 1;
       }
     }
@@ -137,7 +141,8 @@ double VisibilityEvidence::unseenLineLength(const Pose2& field_T_robot,
   const double c = std::cos(robot_T_field.theta), s = std::sin(robot_T_field.theta);
   int unseen = 0;
   for (const auto& p : map.evidenceSamples()) {
-    const int k = cell(c * p.x() - s * p.y() + robot_T_field.x, s * p.x() + c * p.y() + robot_T_field.y);
+    const int k =
+        cell(c * p.x() - s * p.y() + robot_T_field.x, s * p.x() + c * p.y() + robot_T_field.y);
     if (k >= 0 && (cells_[k] & 6) == 2) ++unseen;  // inside with margin, no point near
   }
   return unseen * map.config().evidence_spacing_m;
@@ -154,7 +159,7 @@ double VisibilityEvidence::greenOutsideCarpet(const Pose2& field_T_robot,
     const double y = s * g.x() + c * g.y() + field_T_robot.y;
     outside += std::abs(x) > hx || std::abs(y) > hy;
   }
-  return outside * config_.green_spacing_m * config_.green_spacing_m;
+  return outside * green_cell_area_;
 }
 
 double VisibilityEvidence::penalty(const Pose2& field_T_robot, const MapSignature& map) const {

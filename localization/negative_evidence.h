@@ -52,6 +52,7 @@ class VisibilityEvidence {
   /// Per cell: bit 0 inside the region, bit 1 inside with margin, bit 2 near a seen point.
   std::vector<unsigned char> cells_;
   std::vector<Eigen::Vector2d> green_;  ///< lattice samples inside the region, robot frame
+  double green_cell_area_ = 0.0;        ///< m^2 per green sample
   double density_ = 0.0;
 };
 

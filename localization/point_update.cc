@@ -7,16 +7,11 @@
 namespace houghloc {
 namespace {
 
-/// IRLS weight for a residual in sigmas. Huber: 1 inside k, k / |r| outside. Cauchy:
-/// 1 / (1 + (r / k)^2).
-double robustWeight(double r_sigmas, const PointUpdateConfig& cfg) {
-  const double k = cfg.kernel_sigmas;
-  if (cfg.kernel == PointUpdateConfig::Kernel::kHuber) {
-    const double a = std::abs(r_sigmas);
-    return a <= k ? 1.0 : k / a;
-  }
-  const double u = r_sigmas / k;
-  return 1.0 / (1.0 + u * u);
+/// IRLS weight for a squared residual in units of the kernel scale (u2 = (r / scale)^2).
+/// Huber: 1 inside, 1 / |u| outside. Cauchy: 1 / (1 + u^2). Squared, so no sqrt per point.
+double robustWeight(double u2, PointUpdateConfig::Kernel kernel) {
+  if (kernel == PointUpdateConfig::Kernel::kHuber) return u2 <= 1.0 ? 1.0 : 1.0 / std::sqrt(u2);
+  return 1.0 / (1.0 + u2);
 }
 
 /// Information matrix of a covariance, regularised so a singular or huge covariance still gives a
@@ -51,6 +46,10 @@ Accumulated accumulate(const Pose2& pose, const Eigen::Matrix3d& gate_cov,
   const double var = cfg.point_sigma_m * cfg.point_sigma_m;
   const double inv_lik_var = 1.0 / (cfg.likelihood_sigma_m * cfg.likelihood_sigma_m);
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  const double inv_k2 = 1.0 / (cfg.kernel_sigmas * cfg.kernel_sigmas);
+  const double g00 = gate_cov(0, 0), g01 = gate_cov(0, 1), g02 = gate_cov(0, 2);
+  const double g11 = gate_cov(1, 1), g12 = gate_cov(1, 2), g22 = gate_cov(2, 2);
+  double h00 = 0.0, h01 = 0.0, h02 = 0.0, h11 = 0.0, h12 = 0.0, h22 = 0.0;
   for (size_t i = 0; i < points.size(); i += stride) {
     const GroundPoint& gp = points[i];
     const Eigen::Vector2d& q = gp.p_robot;
@@ -68,16 +67,26 @@ Accumulated accumulate(const Pose2& pose, const Eigen::Matrix3d& gate_cov,
     if (a.distance_m <= cfg.inlier_m) ++acc.inliers;
     if (a.distance_m > cfg.max_association_m) continue;
     // d p / d theta = Rz'(theta) q = perp(arm).
-    const Eigen::Vector3d j(a.normal.x(), a.normal.y(),
-                            a.normal.dot(Eigen::Vector2d(-arm.y(), arm.x())));
-    const double innovation_var = j.dot(gate_cov * j) + var;
-    if (a.residual_m * a.residual_m > cfg.gate_chi2 * innovation_var) continue;
-    const double w = gp.weight * robustWeight(a.residual_m / std::sqrt(innovation_var), cfg);
-    acc.jtj.noalias() += w * j * j.transpose();
-    acc.jtr.noalias() += (w * a.residual_m) * j;
+    const double j0 = a.normal.x(), j1 = a.normal.y();
+    const double j2 = -j0 * arm.y() + j1 * arm.x();
+    // J P J^T written out for the symmetric 3x3 P: this loop is the tracker's hot path.
+    const double innovation_var = g00 * j0 * j0 + g11 * j1 * j1 + g22 * j2 * j2 +
+                                  2.0 * (g01 * j0 * j1 + g02 * j0 * j2 + g12 * j1 * j2) + var;
+    const double r2 = a.residual_m * a.residual_m;
+    if (r2 > cfg.gate_chi2 * innovation_var) continue;
+    const double w = gp.weight * robustWeight(r2 * inv_k2 / innovation_var, cfg.kernel);
+    const double wr = w * a.residual_m;
+    h00 += w * j0 * j0;
+    h01 += w * j0 * j1;
+    h02 += w * j0 * j2;
+    h11 += w * j1 * j1;
+    h12 += w * j1 * j2;
+    h22 += w * j2 * j2;
+    acc.jtr += Eigen::Vector3d(wr * j0, wr * j1, wr * j2);
     acc.weight_sum += w;
     ++acc.used;
   }
+  acc.jtj << h00, h01, h02, h01, h11, h12, h02, h12, h22;
   return acc;
 }
 

@@ -70,7 +70,8 @@ RefinementResult refinePose(const WeightedPoints& points, const Pose2& initial,
   out.inlier_weight = eq.sum_w;
   out.rms_m = eq.sum_w > 0.0 ? std::sqrt(eq.sum_wr2 / eq.sum_w) : 0.0;
   const double sigma = std::max(out.rms_m, config.sigma_floor_m);
-  const double scale = eq.sum_w > config.effective_points ? config.effective_points / eq.sum_w : 1.0;
+  const double scale =
+      eq.sum_w > config.effective_points ? config.effective_points / eq.sum_w : 1.0;
   const Eigen::Matrix3d info = eq.h * (scale / (sigma * sigma)) + prior;
   out.covariance = info.inverse();
   return out;

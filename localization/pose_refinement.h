@@ -9,22 +9,22 @@
 namespace houghloc {
 
 struct RefinementConfig {
-  int iterations = 10;              ///< Gauss-Newton iterations at most
-  double max_distance_m = 0.25;     ///< points farther than this from their line are ignored
-  double huber_m = 0.03;            ///< Huber kernel width on the point-to-line distance
-  double sigma_floor_m = 0.01;      ///< lower bound of the residual std dev in the covariance
-  double effective_points = 30.0;   ///< neighbouring points are correlated: the information is
-                                    ///< scaled as if at most this many points were independent
-  double prior_sigma_m = 5.0;       ///< weak prior keeping unobservable directions finite
-  double prior_sigma_rad = 1.0;     ///< same for the heading
-  double converged_m = 1e-4;        ///< stop when the update is smaller (m, and rad times 1 m)
+  int iterations = 10;             ///< Gauss-Newton iterations at most
+  double max_distance_m = 0.25;    ///< points farther than this from their line are ignored
+  double huber_m = 0.03;           ///< Huber kernel width on the point-to-line distance
+  double sigma_floor_m = 0.01;     ///< lower bound of the residual std dev in the covariance
+  double effective_points = 30.0;  ///< neighbouring points are correlated: the information is
+                                   ///< scaled as if at most this many points were independent
+  double prior_sigma_m = 5.0;      ///< weak prior keeping unobservable directions finite
+  double prior_sigma_rad = 1.0;    ///< same for the heading
+  double converged_m = 1e-4;       ///< stop when the update is smaller (m, and rad times 1 m)
 };
 
 struct RefinementResult {
   Pose2 field_T_robot;
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();  ///< J^T W J (point weight / m^2)
-  double rms_m = 0.0;     ///< weighted RMS distance of the inliers
+  double rms_m = 0.0;                                     ///< weighted RMS distance of the inliers
   double inlier_weight = 0.0;
 };
 

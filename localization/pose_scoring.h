@@ -10,8 +10,8 @@
 namespace houghloc {
 
 struct ScoringConfig {
-  double kernel_width_m = 0.15;    ///< robust kernel k(d) = max(0, 1 - (d / width)^2)
-  double inlier_distance_m = 0.08; ///< a point within this of a line counts as an inlier
+  double kernel_width_m = 0.15;     ///< robust kernel k(d) = max(0, 1 - (d / width)^2)
+  double inlier_distance_m = 0.08;  ///< a point within this of a line counts as an inlier
 };
 
 struct PoseScore {
@@ -26,9 +26,9 @@ PoseScore scorePose(const WeightedPoints& points, const Pose2& field_T_robot,
                     const DistanceGrid& grid, const ScoringConfig& config);
 
 struct PruningConfig {
-  double min_inlier_share = 0.25;  ///< drop candidates with fewer points on map segments
-  double min_relative_score = 0.5; ///< ... or scoring below this share of the best candidate
-  int keep = 20;                   ///< at most this many survivors, best first
+  double min_inlier_share = 0.25;     ///< drop candidates with fewer points on map segments
+  double min_relative_score = 0.5;    ///< ... or scoring below this share of the best candidate
+  int keep = 20;                      ///< at most this many survivors, best first
   double duplicate_distance_m = 0.2;  ///< survivors closer than this ...
   double duplicate_angle_rad = 0.08;  ///< ... and this in heading count once
 };

@@ -1,6 +1,7 @@
 #include "localization/pose_solver.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
 namespace houghloc {
@@ -44,7 +45,8 @@ PoseHypothesis headingOnlyHypothesis(double theta_r, const PoseSolverConfig& con
   PoseHypothesis h;
   h.field_T_robot = Pose2(0.0, 0.0, theta_r);
   const double v = config.sigma_unknown_m * config.sigma_unknown_m;
-  h.covariance = Eigen::Vector3d(v, v, config.sigma_theta_rad * config.sigma_theta_rad).asDiagonal();
+  h.covariance =
+      Eigen::Vector3d(v, v, config.sigma_theta_rad * config.sigma_theta_rad).asDiagonal();
   h.kind = HypothesisKind::kHeadingOnly;
   return h;
 }
@@ -83,9 +85,15 @@ std::vector<PoseHypothesis> solvePoses(
       }
     }
   }
-  if (any_pair) return out;
   for (int k : seen) {
-    for (const auto& c : per_direction[k]) out.push_back(parallelHypothesis(theta_r, c, 0.0, config));
+    double others = 0.0;
+    for (int j : seen) {
+      if (j != k) others = std::max(others, per_direction[j][0].support);
+    }
+    if (any_pair && per_direction[k][0].support < config.dominance_ratio * others) continue;
+    for (const auto& c : per_direction[k]) {
+      out.push_back(parallelHypothesis(theta_r, c, 0.0, config));
+    }
   }
   if (out.empty()) out.push_back(headingOnlyHypothesis(theta_r, config));
   return out;

@@ -17,10 +17,10 @@ struct TranslationConfig {
 /// T_x cos theta_mu + T_y sin theta_mu = d (DESIGN Appendix A step 3): the robot position
 /// projected on the normal of map direction theta_mu.
 struct TranslationConstraint {
-  int direction = 0;        ///< index into MapSignature::dominantDirections()
-  double theta_mu = 0.0;    ///< rad, normal direction of the map lines, [0, pi)
-  double d_m = 0.0;         ///< m
-  double support = 0.0;     ///< point weight that the shift puts on map lines
+  int direction = 0;      ///< index into MapSignature::dominantDirections()
+  double theta_mu = 0.0;  ///< rad, normal direction of the map lines, [0, pi)
+  double d_m = 0.0;       ///< m
+  double support = 0.0;   ///< point weight that the shift puts on map lines
 };
 
 /// c(d) = sum_rho h'(rho) m'(rho + d): the sensor column at theta_mu - theta_R against the map's

@@ -65,6 +65,44 @@ bool dropSpikes(const std::vector<Eigen::Vector2f>& hull, std::vector<Eigen::Vec
   return dropped;
 }
 
+/// Rows at the image bottom without turf (the robot's feet), per sampled column, spread to every
+/// column with the smaller (higher) value of the two neighbouring samples: conservative at the
+/// body's edges.
+std::vector<float> bodyRows(const cv::Mat& bgr, const FieldColor& color,
+                            const FieldBoundaryConfig& config) {
+  const int step = std::max(1, config.column_step_px);
+  // Columns inside wide non-turf runs of the bottom row.
+  std::vector<bool> wide(static_cast<size_t>(bgr.cols), false);
+  const uchar* bottom = bgr.ptr<uchar>(bgr.rows - 1);
+  const int min_width = static_cast<int>(config.min_body_width_share * bgr.cols);
+  for (int u = 0; u < bgr.cols;) {
+    const int begin = u;
+    while (u < bgr.cols && !color.isField(bottom + 3 * u)) ++u;
+    if (u - begin >= std::max(1, min_width))
+      std::fill(wide.begin() + begin, wide.begin() + u, true);
+    if (u == begin) ++u;
+  }
+  std::vector<float> sampled;
+  for (int u = 0; u < bgr.cols; u += step) {
+    if (!wide[static_cast<size_t>(u)]) {
+      sampled.push_back(static_cast<float>(bgr.rows));
+      continue;
+    }
+    int v = bgr.rows - 1;
+    while (v >= 0 && !color.isField(bgr.ptr<uchar>(v) + 3 * u)) --v;
+    const int extent = bgr.rows - 1 - v;
+    sampled.push_back(extent >= config.min_body_px ? static_cast<float>(v + 1)
+                                                   : static_cast<float>(bgr.rows));
+  }
+  std::vector<float> rows(static_cast<size_t>(bgr.cols));
+  for (int u = 0; u < bgr.cols; ++u) {
+    const size_t left = static_cast<size_t>(u / step);
+    const size_t right = std::min(sampled.size() - 1, left + 1);
+    rows[static_cast<size_t>(u)] = std::min(sampled[left], sampled[right]);
+  }
+  return rows;
+}
+
 }  // namespace
 
 FieldBoundary detectFieldBoundary(const cv::Mat& bgr, const FieldColor& color,
@@ -72,7 +110,9 @@ FieldBoundary detectFieldBoundary(const cv::Mat& bgr, const FieldColor& color,
                                   const FieldBoundaryConfig& config) {
   FieldBoundary boundary;
   boundary.rows.assign(static_cast<size_t>(bgr.cols), static_cast<float>(bgr.rows));
+  boundary.body_rows = boundary.rows;
   if (!color.valid) return boundary;
+  boundary.body_rows = bodyRows(bgr, color, config);
   const int step = std::max(1, config.column_step_px);
   for (int u = 0; u < bgr.cols; u += step) {
     const int col = std::min(u, bgr.cols - 1);

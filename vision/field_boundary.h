@@ -15,6 +15,10 @@ struct FieldBoundaryConfig {
   double max_spike_px = 24;  ///< a hull vertex this far above both neighbouring columns' tops
                              ///< (green far beyond the field, e.g. a poster) is dropped
   int max_spike_passes = 4;  ///< hull recomputations for dropped spikes
+  int min_body_px = 12;      ///< non-turf reaching the image bottom over at least this many rows
+                             ///< is the robot's own body (feet): not scanned ...
+  double min_body_width_share = 0.15;  ///< ... when its non-turf run along the bottom row is at
+                                       ///< least this share of the width (lines are narrower)
 };
 
 /// Where the field ends in the image: per column the first row (from the top) of the field.
@@ -25,7 +29,12 @@ struct FieldBoundary {
   std::vector<Eigen::Vector2f> green_tops;  ///< sampled top of the green per column (u, v)
   std::vector<Eigen::Vector2f> hull;        ///< fitted boundary vertices (u, v), left to right
 
+  /// Per column the first row of the robot's own body seen at the image bottom (image height
+  /// when none): turf-less rows touching the bottom edge, widened by one sample column.
+  std::vector<float> body_rows;
+
   float rowAt(int u) const { return rows[static_cast<size_t>(u)]; }
+  float bodyRowAt(int u) const { return body_rows[static_cast<size_t>(u)]; }
 };
 
 /// Finds the top of the green in sparse columns below the start rows (horizon) and fits the

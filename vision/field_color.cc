@@ -95,6 +95,7 @@ FieldColor estimateFieldColor(const cv::Mat& bgr, const std::vector<int>& start_
   color.r = centre.x;
   color.g = centre.y;
   color.radius = radius;
+  color.chroma_noise = static_cast<float>(config.chroma_noise);
   color.field_share = static_cast<float>(lumas.size()) / samples.size();
   color.luma_median = median(lumas);
   std::vector<float> deviations;

@@ -16,6 +16,8 @@ struct FieldColorConfig {
   double shadow_luma_ratio = 0.25;   ///< field pixels may be this much darker than the median
   double white_chroma_ratio = 0.55;  ///< "low saturation": chroma distance to grey below this
                                      ///< share of the field colour's distance to grey
+  double chroma_noise = 10.0;  ///< sensor noise allowance, channel units (0-255): dark pixels'
+                               ///< chromaticity is noisier, so they get more room
 };
 
 /// The turf colour of one frame as normalised chromaticity (r, g) = (R, G) / (R + G + B), which
@@ -30,6 +32,7 @@ struct FieldColor {
   float min_luma = 0.f;      ///< darker pixels are not field (shadow limit)
   float white_radius = 0.f;  ///< chromaticity distance to grey below which a pixel is "white"
   float field_share = 0.f;   ///< share of samples below the horizon that are field
+  float chroma_noise = 0.f;  ///< FieldColorConfig::chroma_noise
 
   /// Luma used throughout the scanlines: (B + 2G + R) / 4, 0-255.
   static int luma(const uchar* bgr) { return (bgr[0] + 2 * bgr[1] + bgr[2]) >> 2; }
@@ -38,7 +41,8 @@ struct FieldColor {
     const float sum = static_cast<float>(bgr[0] + bgr[1] + bgr[2]);
     if (luma(bgr) < min_luma) return false;
     const float dr = bgr[2] - r * sum, dg = bgr[1] - g * sum;
-    return dr * dr + dg * dg < radius * radius * sum * sum;
+    const float tolerance = radius * sum + chroma_noise;
+    return dr * dr + dg * dg < tolerance * tolerance;
   }
   bool isWhitish(const uchar* bgr) const {
     const float sum = static_cast<float>(bgr[0] + bgr[1] + bgr[2]);

@@ -58,11 +58,14 @@ class SpotScanner {
     return k + dir * t;
   }
 
+  /// Turf within `count` px, with nothing dark on the way: a white ball patch is followed by a
+  /// black one before the turf, a line edge only by its anti-aliased blend.
   bool greenWithin(const Scanline& line, int from, int dir, int count) const {
     for (int k = 0; k < count; ++k) {
       const int idx = from + dir * k;
       if (idx < 0 || idx >= line.n) return false;
       if (color_.isField(line.at(idx))) return true;
+      if (line.luma(idx) < dark_luma_) return false;
     }
     return false;
   }
@@ -110,6 +113,7 @@ class SpotScanner {
   std::vector<LineSpot>* spots_;
   LineSpotStats* stats_;
   int threshold_ = 0;
+  int dark_luma_ = 0;
 };
 
 }  // namespace
@@ -122,7 +126,8 @@ std::vector<LineSpot> detectLineSpots(const cv::Mat& bgr, const FieldColor& colo
   if (!color.valid || !boundary.found) return spots;
   const SpotScanner scanner(color, widths, config, &spots, stats);
   for (const ScanGrid::Column& column : grid.columns) {
-    const int n = column.v_end - column.v_begin;
+    const int end = std::min(column.v_end, static_cast<int>(boundary.bodyRowAt(column.u)));
+    const int n = end - column.v_begin;
     if (n < 4) continue;
     scanner.scan({bgr.ptr<uchar>(column.v_begin) + 3 * column.u, static_cast<long>(bgr.step[0]), n,
                   column.u, column.v_begin, 0, 1});
@@ -131,9 +136,12 @@ std::vector<LineSpot> detectLineSpots(const cv::Mat& bgr, const FieldColor& colo
     // Scan each stretch of the row that lies below the boundary.
     int u = 0;
     while (u < bgr.cols) {
-      while (u < bgr.cols && boundary.rowAt(u) > v) ++u;
+      const auto field = [&](int col) {
+        return boundary.rowAt(col) <= v && v < boundary.bodyRowAt(col);
+      };
+      while (u < bgr.cols && !field(u)) ++u;
       const int begin = u;
-      while (u < bgr.cols && boundary.rowAt(u) <= v) ++u;
+      while (u < bgr.cols && field(u)) ++u;
       if (u - begin >= 4) {
         scanner.scan({bgr.ptr<uchar>(v) + 3 * begin, 3, u - begin, begin, v, 1, 0});
       }

@@ -20,6 +20,8 @@ struct LineSpotConfig {
   double width_tolerance_px = 2.0;  ///< added to the allowed width: blur, anti-aliasing
   int green_gap_px = 3;             ///< green must appear within this many px beyond each edge
   double green_gap_width_share = 0.3;  ///< ... plus this share of the expected width
+  double dark_luma_ratio = 0.6;        ///< a non-turf pixel darker than this share of the turf's
+                                       ///< median luma between edge and turf rejects the spot
 };
 
 /// The centre of a bright run across a scanline that looks like a field line.

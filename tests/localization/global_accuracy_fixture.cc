@@ -81,7 +81,7 @@ AccuracySummary evaluateGlobal(const AccuracyRun& run) {
   const GridSearchLocalizer grid(field);
   std::mt19937_64 rng(run.seed);
   AccuracySummary out;
-  for (int k = 0; out.frames < run.frames && k < 50 * run.frames; ++k) {
+  for (int k = 0; out.frames < run.frames && k < 300 * run.frames; ++k) {
     const SyntheticFrame f = makeFrame(field, run, rng, k);
     if (!hasTwoDirections(f)) continue;
     ++out.frames;

@@ -15,10 +15,10 @@ struct AccuracySummary {
   int frames = 0;
   int ghl_any = 0, ghl_top1 = 0, ghl_top2 = 0;  ///< correct up to symmetry at any rank / top k
   int grid_any = 0, grid_top1 = 0;
-  int ghl_positive_any = 0;                     ///< GHL without negative evidence
-  std::vector<double> position_errors_m;        ///< of the correct GHL hypothesis
+  int ghl_positive_any = 0;               ///< GHL without negative evidence
+  std::vector<double> position_errors_m;  ///< of the correct GHL hypothesis
   std::vector<double> heading_errors_rad;
-  double ghl_seconds = 0.0, grid_seconds = 0.0; ///< CPU time
+  double ghl_seconds = 0.0, grid_seconds = 0.0;  ///< CPU time
 
   double rate(int count) const { return frames > 0 ? 100.0 * count / frames : 0.0; }
   std::string describe(const std::string& label) const;
@@ -29,8 +29,8 @@ struct AccuracyRun {
   std::string view = "nao-top";
   int frames = 20;
   std::uint64_t seed = 1;
-  bool grid = false;            ///< also run the exhaustive reference
-  bool positive_only = false;   ///< also run GHL without negative evidence
+  bool grid = false;           ///< also run the exhaustive reference
+  bool positive_only = false;  ///< also run GHL without negative evidence
 };
 
 AccuracySummary evaluateGlobal(const AccuracyRun& run);

@@ -48,7 +48,8 @@ std::vector<Case> cases() {
 INSTANTIATE_TEST_SUITE_P(FieldsAndViews, GlobalVsGrid, ::testing::ValuesIn(cases()),
                          [](const ::testing::TestParamInfo<Case>& info) {
                            std::string name = info.param.field + "_" + info.param.view;
-                           for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                           for (char& c : name)
+                             c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
                            return name;
                          });
 

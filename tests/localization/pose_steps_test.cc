@@ -48,7 +48,7 @@ TEST(PoseSolver, TwoPerpendicularConstraintsSolveExactly) {
   c = {{0, 0.0, 0.0, 1.0}, {1, M_PI / 4, std::sqrt(0.5), 1.0}};
   ASSERT_TRUE(solveTranslation(c, 0.03, &t, &cov));
   EXPECT_NEAR(t.y(), 1.0, 1e-12);
-  EXPECT_GT(cov(1, 1), cov(0, 0));  // the oblique pair constrains y less well
+  EXPECT_GT(cov(1, 1), cov(0, 0));               // the oblique pair constrains y less well
   c = {{0, 0.0, 1.0, 1.0}, {0, 0.0, 2.0, 1.0}};  // parallel
   EXPECT_FALSE(solveTranslation(c, 0.03, &t, &cov));
 }

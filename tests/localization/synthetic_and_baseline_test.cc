@@ -24,7 +24,8 @@ TEST(Synthetic, PointsLieOnMapLinesInsideTheView) {
   ASSERT_EQ(f.ground.visible_regions.size(), 1u);
   for (const auto& g : f.ground.points) {
     EXPECT_LT(nearestFeature(field, truth.transform(g.p_robot)).distance_m, 0.05);
-    EXPECT_LT(std::abs(std::atan2(g.p_robot.y(), g.p_robot.x())), config.view.half_angle_rad + 0.02);
+    EXPECT_LT(std::abs(std::atan2(g.p_robot.y(), g.p_robot.x())),
+              config.view.half_angle_rad + 0.02);
     EXPECT_LT(g.p_robot.norm(), config.view.max_range_m + 0.05);
   }
   // Deterministic for a seed, different for another.
@@ -32,7 +33,8 @@ TEST(Synthetic, PointsLieOnMapLinesInsideTheView) {
   ASSERT_EQ(again.ground.size(), f.ground.size());
   EXPECT_EQ(again.ground.points[3].p_robot, f.ground.points[3].p_robot);
   config.seed = 2;
-  EXPECT_NE(generateFrame(field, truth, config).ground.points[3].p_robot, f.ground.points[3].p_robot);
+  EXPECT_NE(generateFrame(field, truth, config).ground.points[3].p_robot,
+            f.ground.points[3].p_robot);
 }
 
 TEST(Synthetic, VisibleRegionIsClippedToTheCarpetAndShadowed) {

@@ -126,6 +126,8 @@ TEST(TrackingRecovery, KidnapWithInjectedGlobalHypotheses) {
     }
   }
   ASSERT_GE(recovered_at, 0);
+  RecordProperty("asked_after_frames", std::to_string(asked_at - config.kidnap_frame));
+  RecordProperty("recovered_after_frames", std::to_string(recovered_at - config.kidnap_frame));
   EXPECT_LE(asked_at - config.kidnap_frame, 10);      // noticed within disagree_frames + a few
   EXPECT_LE(recovered_at - config.kidnap_frame, 30);  // issue 8: within 30 frames
   const Pose2& truth = frames.back().field_T_robot;

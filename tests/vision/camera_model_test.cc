@@ -358,7 +358,7 @@ TEST(CameraPresets, NumbersMatchTheDocumentedCameras) {
   const auto top_edge = top.pixelToGround(320.0, 479.0);
   const auto bottom_top_edge = bottom.pixelToGround(320.0, 0.0);
   ASSERT_TRUE(top_edge && bottom_top_edge);
-  EXPECT_NEAR(top_edge->x(), 0.56, 0.05);
+  EXPECT_NEAR(top_edge->x(), 0.60, 0.02);
   EXPECT_NEAR(bottom_top_edge->x(), top_edge->x(), 0.1);
   // Horizon inside the image for the forward-looking cameras, above it for nao-bottom.
   EXPECT_GT(top.horizonRows()[320], 0.0);

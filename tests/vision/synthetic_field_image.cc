@@ -9,8 +9,8 @@
 
 namespace houghloc::testing {
 
-cv::Mat drawFieldView(const CameraModel& camera, const FieldModel& field, const Pose2& field_T_robot,
-                      const SyntheticStyle& style) {
+cv::Mat drawFieldView(const CameraModel& camera, const FieldModel& field,
+                      const Pose2& field_T_robot, const SyntheticStyle& style) {
   cv::Mat image(camera.height(), camera.width(), CV_8UC3);
   const Eigen::Vector3d origin = camera.pose().translation();
   // Ground point of every pixel (NaN above the horizon), then colours with the pixel footprint
@@ -21,12 +21,14 @@ cv::Mat drawFieldView(const CameraModel& camera, const FieldModel& field, const 
     for (int u = 0; u < image.cols; ++u) {
       const Eigen::Vector3d ray = camera.pixelRay(u, v);
       if (ray.allFinite() && ray.z() < -1e-4) {
-        ground[static_cast<size_t>(v) * image.cols + u] = (origin - origin.z() / ray.z() * ray).head<2>();
+        ground[static_cast<size_t>(v) * image.cols + u] =
+            (origin - origin.z() / ray.z() * ray).head<2>();
       }
     }
   }
   const auto at = [&](int u, int v) {
-    return ground[static_cast<size_t>(std::min(v, image.rows - 1)) * image.cols + std::min(u, image.cols - 1)];
+    return ground[static_cast<size_t>(std::min(v, image.rows - 1)) * image.cols +
+                  std::min(u, image.cols - 1)];
   };
   for (int v = 0; v < image.rows; ++v) {
     for (int u = 0; u < image.cols; ++u) {

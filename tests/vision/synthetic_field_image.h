@@ -21,7 +21,7 @@ struct SyntheticStyle {
 /// Draws what `camera` sees of `field` from field_T_robot: green carpet (field plus border),
 /// anti-aliased white lines of the map's width, background elsewhere. Independent of the vision
 /// code: every pixel is back-projected with the camera model and compared with the map.
-cv::Mat drawFieldView(const CameraModel& camera, const FieldModel& field, const Pose2& field_T_robot,
-                      const SyntheticStyle& style = {});
+cv::Mat drawFieldView(const CameraModel& camera, const FieldModel& field,
+                      const Pose2& field_T_robot, const SyntheticStyle& style = {});
 
 }  // namespace houghloc::testing

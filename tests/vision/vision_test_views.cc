@@ -38,9 +38,10 @@ PointScore scorePoints(const TestView& view, const std::vector<Eigen::Vector2d>&
   }
   score.points = errors.size();
   if (errors.empty()) return score;
-  score.precision = static_cast<double>(std::count_if(errors.begin(), errors.end(),
-                                                      [&](double e) { return e <= max_distance_m; })) /
-                    errors.size();
+  score.precision =
+      static_cast<double>(std::count_if(errors.begin(), errors.end(),
+                                        [&](double e) { return e <= max_distance_m; })) /
+      errors.size();
   std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
   score.median_error_m = errors[errors.size() / 2];
   return score;

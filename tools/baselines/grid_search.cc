@@ -55,8 +55,8 @@ std::vector<GridSearchOptimum> GridSearchLocalizer::locate(const GroundPoints& f
     if (static_cast<int>(out.size()) >= config_.max_optima) break;
     bool is_new = true;
     for (const auto& kept : out) {
-      is_new &= distinct(kept.field_T_robot, o.field_T_robot, config_.distinct_m,
-                         config_.distinct_rad);
+      is_new &=
+          distinct(kept.field_T_robot, o.field_T_robot, config_.distinct_m, config_.distinct_rad);
     }
     if (is_new) out.push_back(o);
   }
@@ -96,8 +96,8 @@ std::vector<GridSearchLocalizer::Start> GridSearchLocalizer::coarseSearch(
       const int b = std::min(kBuckets - 1, static_cast<int>(p.norm() / kBucketM));
       const float w = static_cast<float>(points.weights[i]);
       for (int r = 0; r < rows; ++r) {
-        const float* src = &tables[b][static_cast<std::size_t>(base_r + r + oy) * lattice_cols_ +
-                                      base_c + ox];
+        const float* src =
+            &tables[b][static_cast<std::size_t>(base_r + r + oy) * lattice_cols_ + base_c + ox];
         float* dst = out + static_cast<std::size_t>(r) * cols;
         for (int col = 0; col < cols; ++col) dst[col] += w * src[col];
       }
@@ -130,7 +130,8 @@ std::vector<GridSearchLocalizer::Start> GridSearchLocalizer::coarseSearch(
       }
     }
   }
-  std::sort(maxima.begin(), maxima.end(), [](const Start& a, const Start& b) { return a.score > b.score; });
+  std::sort(maxima.begin(), maxima.end(),
+            [](const Start& a, const Start& b) { return a.score > b.score; });
   std::vector<Start> out;
   for (const Start& m : maxima) {
     if (static_cast<int>(out.size()) >= config_.starts) break;
@@ -146,17 +147,17 @@ GridSearchOptimum GridSearchLocalizer::refine(const WeightedPoints& points,
   // Pattern search, first with a wide kernel (the start can be half a lattice step off), then
   // with the fine kernel, halving the steps down to 5 mm / 0.1 deg.
   Pose2 pose = start;
-  for (double width : {config_.scoring.kernel_width_m + config_.coarse_extra_m,
-                       config_.scoring.kernel_width_m}) {
+  for (double width :
+       {config_.scoring.kernel_width_m + config_.coarse_extra_m, config_.scoring.kernel_width_m}) {
     ScoringConfig scoring = config_.scoring;
     scoring.kernel_width_m = width;
     double best = scorePose(points, pose, grid_, scoring).score;
     double dxy = 0.5 * config_.step_m, dth = 0.5 * config_.step_rad;
     while (dxy >= 0.005) {
       bool moved = false;
-      for (const Eigen::Vector3d& d : {Eigen::Vector3d(dxy, 0, 0), Eigen::Vector3d(-dxy, 0, 0),
-                                       Eigen::Vector3d(0, dxy, 0), Eigen::Vector3d(0, -dxy, 0),
-                                       Eigen::Vector3d(0, 0, dth), Eigen::Vector3d(0, 0, -dth)}) {
+      for (const Eigen::Vector3d& d :
+           {Eigen::Vector3d(dxy, 0, 0), Eigen::Vector3d(-dxy, 0, 0), Eigen::Vector3d(0, dxy, 0),
+            Eigen::Vector3d(0, -dxy, 0), Eigen::Vector3d(0, 0, dth), Eigen::Vector3d(0, 0, -dth)}) {
         const Pose2 trial(pose.x + d.x(), pose.y + d.y(), pose.theta + d.z());
         const double s = scorePose(points, trial, grid_, scoring).score;
         if (s > best) {

@@ -25,8 +25,8 @@ struct GridSearchConfig {
   /// Coarse kernel width: the fine width plus the lattice's worst misplacement of a point at
   /// range r (half a cell diagonal, rounding to cells, r * half the heading step).
   double coarse_extra_m = 0.12;
-  ScoringConfig scoring;                 ///< fine scoring, same as the localizer's
-  DistanceGridConfig grid;               ///< same as the localizer's (MapSignatureConfig::grid)
+  ScoringConfig scoring;    ///< fine scoring, same as the localizer's
+  DistanceGridConfig grid;  ///< same as the localizer's (MapSignatureConfig::grid)
 };
 
 struct GridSearchOptimum {

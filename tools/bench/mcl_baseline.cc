@@ -7,7 +7,28 @@ namespace houghloc::bench {
 
 MonteCarloLocalizer::MonteCarloLocalizer(const FieldModel& field, const DistanceGrid& grid,
                                          const MclConfig& config, std::uint32_t seed)
-    : field_(field), grid_(grid), config_(config), rng_(seed) {}
+    : field_(field), grid_(grid), config_(config), rng_(seed) {
+  // As teams do: the point likelihood is tabulated once per map on the distance grid's nodes, so
+  // weighting a particle costs one lookup per point.
+  const double sigma2 = config_.point_sigma_m * config_.point_sigma_m;
+  log_field_.resize(static_cast<size_t>(grid_.cols()) * grid_.rows());
+  for (int r = 0; r < grid_.rows(); ++r) {
+    for (int c = 0; c < grid_.cols(); ++c) {
+      const double d = grid_.distance(grid_.origin() + grid_.resolution() * Eigen::Vector2d(c, r));
+      log_field_[static_cast<size_t>(r) * grid_.cols() + c] = static_cast<float>(
+          std::log((1.0 - config_.z_random) * std::exp(-0.5 * d * d / sigma2) + config_.z_random));
+    }
+  }
+  log_outside_ = std::log(config_.z_random);
+}
+
+double MonteCarloLocalizer::logLikelihoodAt(double x, double y) const {
+  const double inv = 1.0 / grid_.resolution();
+  const int c = static_cast<int>(std::lround((x - grid_.origin().x()) * inv));
+  const int r = static_cast<int>(std::lround((y - grid_.origin().y()) * inv));
+  if (c < 0 || r < 0 || c >= grid_.cols() || r >= grid_.rows()) return log_outside_;
+  return log_field_[static_cast<size_t>(r) * grid_.cols() + c];
+}
 
 Pose2 MonteCarloLocalizer::randomPose() {
   std::uniform_real_distribution<double> ux(-field_.halfLength(), field_.halfLength());
@@ -32,7 +53,6 @@ void MonteCarloLocalizer::update(const Pose2& motion, const GroundPoints& points
   const double st = config_.trans_noise_per_m * trans + config_.min_trans_noise_m;
   const double sr =
       config_.rot_noise_per_rad * rot + config_.rot_noise_per_m * trans + config_.min_rot_noise_rad;
-  const double sigma2 = config_.point_sigma_m * config_.point_sigma_m;
   const double scale =
       points.empty() ? 0.0 : config_.likelihood_points / static_cast<double>(points.size());
   double max_log = -1e300, mean_likelihood = 0.0;
@@ -40,10 +60,10 @@ void MonteCarloLocalizer::update(const Pose2& motion, const GroundPoints& points
     p.pose = p.pose *
              Pose2(motion.x + st * n(rng_), motion.y + st * n(rng_), motion.theta + sr * n(rng_));
     double log_l = 0.0;
+    const double c = std::cos(p.pose.theta), s = std::sin(p.pose.theta);
     for (const GroundPoint& gp : points.points) {
-      const double d = grid_.distance(p.pose.transform(gp.p_robot));
-      log_l +=
-          std::log((1.0 - config_.z_random) * std::exp(-0.5 * d * d / sigma2) + config_.z_random);
+      const Eigen::Vector2d& q = gp.p_robot;
+      log_l += logLikelihoodAt(c * q.x() - s * q.y() + p.pose.x, s * q.x() + c * q.y() + p.pose.y);
     }
     p.log_weight = scale * log_l;
     max_log = std::max(max_log, p.log_weight);

@@ -47,6 +47,8 @@ class MonteCarloLocalizer {
     double log_weight = 0.0;
   };
   Pose2 randomPose();
+  /// Precomputed log-likelihood of a point at a cell (the "likelihood field"), nearest cell.
+  double logLikelihoodAt(double x, double y) const;
   void resample(double inject_share);
   /// Weighted mean of the particles within cluster_radius_m of `centre`.
   void computeEstimate(const Pose2& centre);
@@ -57,6 +59,8 @@ class MonteCarloLocalizer {
   std::mt19937 rng_;
   std::vector<Particle> particles_;
   std::vector<double> weights_;
+  std::vector<float> log_field_;  ///< per DistanceGrid node, row-major
+  double log_outside_ = 0.0;      ///< log-likelihood beyond the grid (uniform share only)
   double w_slow_ = 0.0, w_fast_ = 0.0;
   Pose2 estimate_;
 };

@@ -16,11 +16,13 @@ int main(int argc, char** argv) {
 
   const OfflineMode mode = offlineMode(options);
   if (mode != OfflineMode::kVisionOnly || options.evaluate_only) {
-    const char* what = options.evaluate_only   ? "--evaluate-only"
+    const char* what = options.evaluate_only              ? "--evaluate-only"
                        : mode == OfflineMode::kGlobalOnly ? "--global-only"
                                                           : "the full mode (tracking)";
-    std::fprintf(stderr, "houghloc-offline: %s is not implemented yet in this build; "
-                         "use --vision-only\n", what);
+    std::fprintf(stderr,
+                 "houghloc-offline: %s is not implemented yet in this build; "
+                 "use --vision-only\n",
+                 what);
     return 3;
   }
   try {

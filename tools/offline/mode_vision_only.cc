@@ -89,13 +89,13 @@ int runVisionOnly(const OfflineContext& context) {
     stats.max_ms = std::max(stats.max_ms, result.diagnostics.time_total_ms);
     stats.last_correction = result.diagnostics.pose_correction_rad;
     for (const GroundPoint& p : result.ground.points) {
-      points_csv.writeRow({CsvWriter::format(frame.t_us), points_csv.format(p.pixel.x()),
+      points_csv.writeRow({points_csv.format(frame.t_us), points_csv.format(p.pixel.x()),
                            points_csv.format(p.pixel.y()), points_csv.format(p.p_robot.x()),
                            points_csv.format(p.p_robot.y())});
     }
-    timing_csv.writeRow({CsvWriter::format(frame.t_us),
-                         timing_csv.format(result.diagnostics.time_total_ms),
-                         CsvWriter::format(static_cast<std::int64_t>(result.ground.points.size()))});
+    timing_csv.writeRow(
+        {points_csv.format(frame.t_us), timing_csv.format(result.diagnostics.time_total_ms),
+         timing_csv.format(static_cast<std::int64_t>(result.ground.points.size()))});
     if (metrics) {
       if (const auto truth = groundTruthAt(rec.ground_truth, frame.t_us)) {
         const CameraModel camera(intrinsics, frame.robot_T_camera);

@@ -75,8 +75,8 @@ OfflineContext loadOfflineContext(const OfflineOptions& options) {
     throw std::runtime_error("--end " + std::to_string(options.end) + " is before --start " +
                              std::to_string(options.start));
   }
-  context.out_dir = options.out_dir.empty() ? (fs::path(options.folder) / "houghloc").string()
-                                            : options.out_dir;
+  context.out_dir =
+      options.out_dir.empty() ? (fs::path(options.folder) / "houghloc").string() : options.out_dir;
   prepareOutput(context.out_dir);
   return context;
 }

@@ -11,7 +11,8 @@ void addOfflineOptions(CLI::App& app, OfflineOptions* o) {
   app.add_option("--standard", o->standard, "standard field: spl, spl2019, kid, adult, msl")
       ->excludes(field);
   app.add_option("--config", o->config_file, "config YAML with a vision: section (and others)");
-  auto* vision = app.add_flag("--vision-only", o->vision_only, "run vision alone, write points.csv");
+  auto* vision =
+      app.add_flag("--vision-only", o->vision_only, "run vision alone, write points.csv");
   app.add_flag("--global-only", o->global_only, "vision + global localization per frame")
       ->excludes(vision);
   app.add_flag("--overlay", o->overlay, "draw points, boundary and horizon into OUT/overlay/");

@@ -21,8 +21,8 @@ struct OfflineOptions {
   bool points = false;
   bool quiet = false;
   bool evaluate_only = false;
-  int start = 0;   ///< first frame index
-  int end = -1;    ///< one past the last frame index; -1 = all
+  int start = 0;  ///< first frame index
+  int end = -1;   ///< one past the last frame index; -1 = all
 };
 
 enum class OfflineMode { kVisionOnly, kGlobalOnly, kFull };

@@ -1,10 +1,9 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
-
-#include <opencv2/core.hpp>
 
 #include "tools/offline/offline_context.h"
 

@@ -22,7 +22,8 @@ void drawRowCurve(cv::Mat* image, const std::vector<float>& rows, const cv::Scal
 
 }  // namespace
 
-cv::Mat drawVisionOverlay(const cv::Mat& bgr, const VisionResult& result, const CameraModel& camera) {
+cv::Mat drawVisionOverlay(const cv::Mat& bgr, const VisionResult& result,
+                          const CameraModel& camera) {
   cv::Mat image = bgr.clone();
   drawRowCurve(&image, std::vector<float>(result.horizon_rows.begin(), result.horizon_rows.end()),
                {0, 255, 255});

@@ -54,7 +54,8 @@ std::vector<Eigen::Vector2d> VisionMetricsAccumulator::featureSamples(
     const Arc2& arc = field_.arcs[static_cast<size_t>(index)];
     const int n = std::max(1, static_cast<int>(std::round(arc.length() / step)));
     const int last = arc.isFullCircle() ? n - 1 : n;
-    for (int i = 0; i <= last; ++i) samples.push_back(arc.pointAt(arc.start_rad + arc.sweep_rad * i / n));
+    for (int i = 0; i <= last; ++i)
+      samples.push_back(arc.pointAt(arc.start_rad + arc.sweep_rad * i / n));
   } else if (k == "marks" && index < static_cast<int>(field_.marks.size())) {
     samples.push_back(field_.marks[static_cast<size_t>(index)].center);
   }
@@ -88,9 +89,9 @@ void VisionMetricsAccumulator::addFrame(const GroundPoints& points, const Pose2&
       const auto pixel = camera.project({p_robot.x(), p_robot.y(), 0.0});
       if (!pixel || !camera.inImage(*pixel)) continue;
       in_view_band.push_back(bandOf(p_robot.norm()));
-      found.push_back(std::any_of(points.points.begin(), points.points.end(), [&](const GroundPoint& g) {
-        return (g.p_robot - p_robot).squaredNorm() <= r2;
-      }));
+      found.push_back(std::any_of(
+          points.points.begin(), points.points.end(),
+          [&](const GroundPoint& g) { return (g.p_robot - p_robot).squaredNorm() <= r2; }));
     }
     if (in_view_band.empty()) continue;
     // Part of the in-view length may be occluded: scale to the renderer's visible length.

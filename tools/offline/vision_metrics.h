@@ -42,7 +42,8 @@ struct VisionMetrics {
 /// the renderer reports part of it occluded; a sample is found when a point lies within 10 cm.
 class VisionMetricsAccumulator {
  public:
-  explicit VisionMetricsAccumulator(const FieldModel& field, const VisionMetricsConfig& config = {});
+  explicit VisionMetricsAccumulator(const FieldModel& field,
+                                    const VisionMetricsConfig& config = {});
 
   /// camera: posed at the frame's (exact) robot_T_camera.
   void addFrame(const GroundPoints& points, const Pose2& field_T_robot,

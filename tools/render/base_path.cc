@@ -30,8 +30,8 @@ class FigureEight : public BasePath {
   Pose2 pose(double tau) const override {
     const double s = wrapTime(tau, duration()) * speed_;
     const auto it = std::upper_bound(arc_.begin(), arc_.end(), s);
-    const int i = std::clamp(static_cast<int>(it - arc_.begin()) - 1, 0,
-                             static_cast<int>(arc_.size()) - 2);
+    const int i =
+        std::clamp(static_cast<int>(it - arc_.begin()) - 1, 0, static_cast<int>(arc_.size()) - 2);
     const double f = (s - arc_[i]) / std::max(1e-12, arc_[i + 1] - arc_[i]);
     const double phi = phiOf(i) + f * (phiOf(i + 1) - phiOf(i));
     const Eigen::Vector2d p = point(phi);

@@ -21,7 +21,8 @@ float smoothstep(float e0, float e1, float x) {
 
 /// Cheap integer hash to [0, 1) for per-plank variation.
 float hash01(int a, int b) {
-  std::uint32_t h = static_cast<std::uint32_t>(a) * 73856093u ^ static_cast<std::uint32_t>(b) * 19349663u;
+  std::uint32_t h =
+      static_cast<std::uint32_t>(a) * 73856093u ^ static_cast<std::uint32_t>(b) * 19349663u;
   h ^= h >> 13;
   h *= 0x5bd1e995u;
   h ^= h >> 15;
@@ -43,8 +44,8 @@ GroundShader::GroundShader(const FieldModel& field, const SceneConfig& scene, co
     : field_(field), scene_(scene), room_(room) {
   blades_ = NoiseTexture(512, 0.0015, 0.6, seed * 7u + 6u);  // single blades, close up
   fine_ = NoiseTexture(512, 0.006, 0.7, seed * 7u + 1u);     // turf fibres
-  blotch_ = NoiseTexture(256, 0.03, 2.5, seed * 7u + 2u); // tufts, dirt
-  large_ = NoiseTexture(64, 0.25, 2.0, seed * 7u + 3u);   // wear, uneven pile
+  blotch_ = NoiseTexture(256, 0.03, 2.5, seed * 7u + 2u);    // tufts, dirt
+  large_ = NoiseTexture(64, 0.25, 2.0, seed * 7u + 3u);      // wear, uneven pile
   field_lines_.addField(field);
   const Eigen::Vector2d outer(field.outerHalfLength(), field.outerHalfWidth());
   field_lines_.build(-outer, outer);
@@ -63,8 +64,8 @@ GroundShader::GroundShader(const FieldModel& field, const SceneConfig& scene, co
       for (int c = 0; c < cols; ++c) {
         const double x = -room.half_x + c * light_res_, y = -room.half_y + r * light_res_;
         // Lamps every few metres (smooth bumps) and a linear gradient toward the windows.
-        const double lamps = std::cos(2.0 * M_PI * (x - ox) / lamp_dx) *
-                             std::cos(2.0 * M_PI * (y - oy) / lamp_dy);
+        const double lamps =
+            std::cos(2.0 * M_PI * (x - ox) / lamp_dx) * std::cos(2.0 * M_PI * (y - oy) / lamp_dy);
         const double v = 0.5 * lamps + gx * x / room.half_x + gy * y / room.half_y -
                          0.5 * std::hypot(x / room.half_x, y / room.half_y);
         light_map_(r, c) = static_cast<float>(v);
@@ -110,11 +111,12 @@ float GroundShader::light(const Eigen::Vector2f& g) const {
 Eigen::Vector3f GroundShader::turf(const Eigen::Vector2f& g, const Footprint& fp, float size,
                                    float view_z) const {
   float tex = 1.0f;
-  float fine = 0.0f;
+  float fine = 0.0f, blade = 0.0f;
   if (scene_.turf_texture) {
     fine = fine_.sample(g.x(), g.y(), size);
     // Blades only matter close up (a footprint of a few mm); skip them farther away.
-    if (size < 0.01f) tex += 0.08f * (1.0f - 100.0f * size) * blades_.sample(g.x(), g.y(), size);
+    if (size < 0.01f) blade = (1.0f - 100.0f * size) * blades_.sample(g.x(), g.y(), size);
+    tex += 0.08f * blade;
     tex += 0.08f * fine + 0.03f * blotch_.sample(g.x(), g.y(), size) +
            0.02f * large_.sample(g.x(), g.y(), size);
   }
@@ -134,7 +136,9 @@ Eigen::Vector3f GroundShader::turf(const Eigen::Vector2f& g, const Footprint& fp
   const float sheen = smoothstep(0.5f, 0.05f, -view_z);
   Eigen::Vector3f colour = tex * ((1.0f - 0.5f * sheen) * kTurf + 0.5f * sheen * kTurfSheen);
   // Field lines: true width, ragged turf edges, worn and dirty in places.
-  const float rough = static_cast<float>(scene_.line_edge_roughness_m) * fine;
+  // Ragged at the scale of single blades, straight from afar.
+  const float rough =
+      static_cast<float>(scene_.line_edge_roughness_m) * (0.7f * blade + 0.3f * fine);
   const PaintCoverage paint = field_lines_.coverage(g, fp, rough);
   if (paint.coverage > 0.0f) {
     float alpha = paint.coverage;
@@ -176,8 +180,8 @@ Eigen::Vector3f GroundShader::gymFloor(const Eigen::Vector2f& g, const Footprint
 Eigen::Vector3f GroundShader::shade(const Eigen::Vector2f& g, const Footprint& fp, float view_z,
                                     const std::vector<ShadowDisc>& shadows) const {
   const float size = std::max(fp.du.norm(), fp.dv.norm());
-  const bool on_carpet = std::abs(g.x()) <= field_.outerHalfLength() &&
-                         std::abs(g.y()) <= field_.outerHalfWidth();
+  const bool on_carpet =
+      std::abs(g.x()) <= field_.outerHalfLength() && std::abs(g.y()) <= field_.outerHalfWidth();
   Eigen::Vector3f colour = on_carpet ? turf(g, fp, size, view_z) : gymFloor(g, fp, size);
   float shade = light(g);
   for (const ShadowDisc& s : shadows) {

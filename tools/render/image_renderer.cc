@@ -28,9 +28,9 @@ const std::vector<Eigen::Vector3d>& pentagonDirections() {
 
 /// A primitive's bounding sphere as seen from the camera, for tile culling.
 struct Bound {
-  Eigen::Vector3f dir_camera;  ///< unit, camera frame
+  Eigen::Vector3f dir_camera;        ///< unit, camera frame
   float cos_r = 1.0f, sin_r = 0.0f;  ///< angular radius
-  bool everywhere = false;     ///< the camera is inside the bound
+  bool everywhere = false;           ///< the camera is inside the bound
 };
 
 }  // namespace
@@ -44,8 +44,8 @@ float ImageRenderer::netAlpha(const Hit& hit, float footprint) const {
   auto thread = [&](double coord) {
     const float f = static_cast<float>(coord / kSpacing - std::floor(coord / kSpacing)) * kSpacing;
     const float dist = std::min(f, kSpacing - f);
-    const float exact = std::clamp((0.5f * kThread - dist) / std::max(footprint, 1e-4f) + 0.5f,
-                                   0.0f, 1.0f);
+    const float exact =
+        std::clamp((0.5f * kThread - dist) / std::max(footprint, 1e-4f) + 0.5f, 0.0f, 1.0f);
     const float mix = std::clamp(footprint / kSpacing, 0.0f, 1.0f);
     return (1.0f - mix) * exact + mix * kThread / kSpacing;
   };
@@ -161,8 +161,7 @@ void ImageRenderer::render(const FrameView& view, const SceneObjects& objects,
             if (!prims[k].intersect(od, dd, net)) continue;
             const float footprint = static_cast<float>(net.t) * rays_.ray_du[idx].norm();
             const float alpha = netAlpha(net, footprint);
-            colour = (1.0f - alpha) * colour +
-                     alpha * shadeObject(prims[k], net, od + net.t * dd);
+            colour = (1.0f - alpha) * colour + alpha * shadeObject(prims[k], net, od + net.t * dd);
           }
           out_row[col] = cv::Vec3f(colour.x(), colour.y(), colour.z());
         }

@@ -22,8 +22,8 @@ void LinePainter::addBar(const Eigen::Vector2d& a, const Eigen::Vector2d& b, dou
   it.a = a.cast<float>();
   const Eigen::Vector2d d = b - a;
   it.length = static_cast<float>(d.norm());
-  it.dir = it.length > 0.0f ? Eigen::Vector2f((d / d.norm()).cast<float>())
-                            : Eigen::Vector2f::UnitX();
+  it.dir =
+      it.length > 0.0f ? Eigen::Vector2f((d / d.norm()).cast<float>()) : Eigen::Vector2f::UnitX();
   it.cap = static_cast<float>(cap);
   it.half_width = static_cast<float>(0.5 * width);
   it.tag = tag;
@@ -132,7 +132,8 @@ float LinePainter::itemCoverage(const Item& it, const Eigen::Vector2f& g, const 
     }
     case Item::Kind::kDisc: {
       const float rho = rel.norm();
-      const Eigen::Vector2f radial = rho > 1e-6f ? Eigen::Vector2f(rel / rho) : Eigen::Vector2f(1, 0);
+      const Eigen::Vector2f radial =
+          rho > 1e-6f ? Eigen::Vector2f(rel / rho) : Eigen::Vector2f(1, 0);
       return overlap(rho, fp.along(radial), -hw, hw);
     }
   }

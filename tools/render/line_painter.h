@@ -53,10 +53,10 @@ class LinePainter {
  private:
   struct Item {
     enum class Kind { kBar, kRing, kDisc } kind = Kind::kBar;
-    Eigen::Vector2f a = Eigen::Vector2f::Zero();    ///< bar start, ring/disc centre
-    Eigen::Vector2f dir = Eigen::Vector2f::UnitX(); ///< bar direction
-    float length = 0.0f, cap = 0.0f;                ///< bar
-    float half_width = 0.0f;                        ///< bar, ring; disc: radius
+    Eigen::Vector2f a = Eigen::Vector2f::Zero();      ///< bar start, ring/disc centre
+    Eigen::Vector2f dir = Eigen::Vector2f::UnitX();   ///< bar direction
+    float length = 0.0f, cap = 0.0f;                  ///< bar
+    float half_width = 0.0f;                          ///< bar, ring; disc: radius
     float radius = 0.0f, start = 0.0f, sweep = 0.0f;  ///< ring
     bool full = true;
     int tag = 0;

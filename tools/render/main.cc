@@ -74,8 +74,9 @@ void resolveCamera(const std::string& camera_arg, const Scenario& s,
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"houghloc-render: renders a synthetic recorded folder with ground truth "
-               "(DESIGN 5.4; scenario format in docs/render.md)"};
+  CLI::App app{
+      "houghloc-render: renders a synthetic recorded folder with ground truth "
+      "(DESIGN 5.4; scenario format in docs/render.md)"};
   std::string field_file, standard, camera, trajectory, scenario_file, out_dir;
   int frames = -1;
   long long seed = -1;
@@ -84,10 +85,12 @@ int main(int argc, char** argv) {
   auto* standard_opt =
       app.add_option("--standard", standard, "standard field: spl, spl2019, kid, adult, msl");
   field_opt->excludes(standard_opt);
-  app.add_option("--camera", camera, "preset (nao-top, nao-bottom, kid-wide, adult) or camera.yaml");
+  app.add_option("--camera", camera,
+                 "preset (nao-top, nao-bottom, kid-wide, adult) or camera.yaml");
   auto* traj_opt = app.add_option("--trajectory", trajectory,
                                   "built-in: walk, spin, kidnap, fall, random-poses");
-  auto* scen_opt = app.add_option("--scenario", scenario_file, "scenario YAML")->check(CLI::ExistingFile);
+  auto* scen_opt =
+      app.add_option("--scenario", scenario_file, "scenario YAML")->check(CLI::ExistingFile);
   traj_opt->excludes(scen_opt);
   app.add_option("--frames", frames, "number of frames (default: scenario, else 300)")
       ->check(CLI::NonNegativeNumber);

@@ -196,4 +196,3 @@ Primitive makeNetPanel(const Eigen::Vector3d& corner, const Eigen::Vector3d& edg
 }
 
 }  // namespace houghloc
-

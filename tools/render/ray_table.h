@@ -14,9 +14,9 @@ namespace houghloc {
 struct RayTable {
   int width = 0, height = 0;  ///< rendered size = image size * supersampling
   int supersampling = 1;
-  std::vector<Eigen::Vector3f> ray;       ///< unit; NaN outside the lens model's field of view
-  std::vector<Eigen::Vector3f> ray_du;    ///< d ray / d (rendered) column
-  std::vector<Eigen::Vector3f> ray_dv;    ///< d ray / d (rendered) row
+  std::vector<Eigen::Vector3f> ray;     ///< unit; NaN outside the lens model's field of view
+  std::vector<Eigen::Vector3f> ray_du;  ///< d ray / d (rendered) column
+  std::vector<Eigen::Vector3f> ray_dv;  ///< d ray / d (rendered) row
 
   static constexpr int kTile = 16;  ///< rendered pixels per tile side
   int tiles_x = 0, tiles_y = 0;

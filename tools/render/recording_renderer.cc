@@ -30,8 +30,8 @@ FrameView makeView(const Pose2& field_T_robot, const Pose3& robot_T_camera) {
   const Eigen::Matrix3d rz =
       Eigen::AngleAxisd(field_T_robot.theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   view.field_R_camera = rz * robot_T_camera.rotation();
-  view.origin = rz * robot_T_camera.translation() +
-                Eigen::Vector3d(field_T_robot.x, field_T_robot.y, 0.0);
+  view.origin =
+      rz * robot_T_camera.translation() + Eigen::Vector3d(field_T_robot.x, field_T_robot.y, 0.0);
   return view;
 }
 
@@ -157,7 +157,8 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
   }
   rec.hints = makeHints(sc, trajectory);
   writeRecording(rec, job.out_dir);
-  writeHeaderIfMissing(out / "truth" / "visible.csv", "t_us,feature,visible_length_m,direction_deg");
+  writeHeaderIfMissing(out / "truth" / "visible.csv",
+                       "t_us,feature,visible_length_m,direction_deg");
   writeHeaderIfMissing(out / "truth" / "events.csv", "t_us,event");
 }
 

@@ -7,11 +7,11 @@
 namespace houghloc {
 namespace {
 
-const Eigen::Vector3f kDado(125.0f, 110.0f, 100.0f);   ///< lower wall paint
-const Eigen::Vector3f kWall(200.0f, 208.0f, 212.0f);   ///< upper wall paint
+const Eigen::Vector3f kDado(125.0f, 110.0f, 100.0f);  ///< lower wall paint
+const Eigen::Vector3f kWall(200.0f, 208.0f, 212.0f);  ///< upper wall paint
 const Eigen::Vector3f kCeiling(150.0f, 152.0f, 155.0f);
-const Eigen::Vector3f kLamp(300.0f, 300.0f, 290.0f);   ///< over-exposed
-const Eigen::Vector3f kPlain(90.0f, 90.0f, 90.0f);     ///< walls switched off
+const Eigen::Vector3f kLamp(300.0f, 300.0f, 290.0f);  ///< over-exposed
+const Eigen::Vector3f kPlain(90.0f, 90.0f, 90.0f);    ///< walls switched off
 
 }  // namespace
 

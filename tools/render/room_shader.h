@@ -22,11 +22,11 @@ class RoomShader {
 
  private:
   struct Decor {
-    int wall = 0;               ///< 0: x = +half_x, 1: y = +half_y, 2: x = -half_x, 3: y = -half_y
-    float s0 = 0, s1 = 0;       ///< along the wall (m)
-    float z0 = 0, z1 = 0;       ///< height (m)
+    int wall = 0;          ///< 0: x = +half_x, 1: y = +half_y, 2: x = -half_x, 3: y = -half_y
+    float s0 = 0, s1 = 0;  ///< along the wall (m)
+    float z0 = 0, z1 = 0;  ///< height (m)
     Eigen::Vector3f bgr;
-    float frame = 0.0f;         ///< dark frame width (white boards), m
+    float frame = 0.0f;  ///< dark frame width (white boards), m
   };
   Eigen::Vector3f wall(int wall, float s, float z) const;
   Eigen::Vector3f ceiling(float x, float y) const;

@@ -24,14 +24,14 @@ struct Waypoint {
 struct TrajectoryConfig {
   std::string name = "walk";  ///< walk | spin | kidnap | fall | random-poses | waypoints
   std::vector<Waypoint> waypoints;
-  bool loop = true;               ///< waypoints: start over at the end
-  double walk_speed_mps = 0.25;   ///< built-in walking trajectories
-  double turn_speed_dps = 40.0;   ///< maximum turning rate while walking
-  double spin_rate_dps = 30.0;    ///< spin: turning rate on the spot
+  bool loop = true;                        ///< waypoints: start over at the end
+  double walk_speed_mps = 0.25;            ///< built-in walking trajectories
+  double turn_speed_dps = 40.0;            ///< maximum turning rate while walking
+  double spin_rate_dps = 30.0;             ///< spin: turning rate on the spot
   double spin_x_m = -1.5, spin_y_m = 1.0;  ///< spin: where
-  double gait_sway_deg = 1.0;      ///< camera roll/pitch wobble amplitude while walking
-  double gait_frequency_hz = 1.8;  ///< step frequency of that wobble
-  double random_margin_m = 0.3;    ///< random-poses: how far beyond the lines poses may lie
+  double gait_sway_deg = 1.0;              ///< camera roll/pitch wobble amplitude while walking
+  double gait_frequency_hz = 1.8;          ///< step frequency of that wobble
+  double random_margin_m = 0.3;            ///< random-poses: how far beyond the lines poses may lie
 };
 
 /// Head joint motion on top of the camera's mount (robot_T_camera of the preset).
@@ -44,7 +44,7 @@ struct HeadConfig {
   double tilt_deg = 0.0;      ///< added to the mount's pitch (positive looks down)
   double sweep_amplitude_deg = 40.0;
   double sweep_period_s = 8.0;
-  std::vector<HeadKey> schedule;  ///< mode schedule: linear between keys
+  std::vector<HeadKey> schedule;             ///< mode schedule: linear between keys
   double neck_height_below_camera_m = 0.06;  ///< pan/tilt pivot below the optical centre
 };
 
@@ -59,19 +59,19 @@ struct FallConfig {
 
 /// Odometry errors (DESIGN §3: cumulative odometry pose); noise is proportional to motion.
 struct OdometryConfig {
-  double translation_noise = 0.05;  ///< sigma per metre walked (fraction)
-  double rotation_noise = 0.05;     ///< sigma per radian turned (fraction)
+  double translation_noise = 0.05;            ///< sigma per metre walked (fraction)
+  double rotation_noise = 0.05;               ///< sigma per radian turned (fraction)
   double rotation_per_metre_noise_deg = 2.0;  ///< heading sigma per metre walked
-  double scale_bias = 0.05;         ///< reported translation = true * (1 + scale_bias)
-  double rotation_bias = -0.03;     ///< reported rotation = true * (1 + rotation_bias)
-  double slip_rate_hz = 0.05;       ///< how often the feet slip
+  double scale_bias = 0.05;                   ///< reported translation = true * (1 + scale_bias)
+  double rotation_bias = -0.03;               ///< reported rotation = true * (1 + rotation_bias)
+  double slip_rate_hz = 0.05;                 ///< how often the feet slip
   double slip_duration_s = 0.6;
-  double slip_factor = 0.4;         ///< during a slip the robot really moves only this fraction
+  double slip_factor = 0.4;  ///< during a slip the robot really moves only this fraction
 };
 
 struct RobotConfig {
   double x_m = 0.0, y_m = 0.0, theta_deg = 0.0;
-  std::string team = "blue";    ///< red | blue | black | yellow | green | white (jersey colour)
+  std::string team = "blue";  ///< red | blue | black | yellow | green | white (jersey colour)
   double vx_mps = 0.0, vy_mps = 0.0;  ///< field-frame drift; bounces off the carpet edge
 };
 
@@ -87,53 +87,53 @@ struct SceneConfig {
   bool turf_texture = true;
   bool mowing_stripes = true;
   double stripe_width_m = 0.5;
-  double stripe_contrast = 0.05;   ///< relative brightness difference of the stripes
+  double stripe_contrast = 0.05;  ///< relative brightness difference of the stripes
   bool lighting_gradient = true;
-  double lighting_strength = 0.12; ///< relative brightness variation over the field
-  double line_wear = 0.4;          ///< 0 = perfect paint; 1 = strongly worn and dirty lines
+  double lighting_strength = 0.12;       ///< relative brightness variation over the field
+  double line_wear = 0.4;                ///< 0 = perfect paint; 1 = strongly worn and dirty lines
   double line_edge_roughness_m = 0.002;  ///< ragged turf edges of the lines
   bool goals = true;
   bool goal_nets = true;
-  bool goal_frame = true;          ///< the white frame lying on the ground behind the goal line
-  bool gym_floor = true;           ///< wooden floor beyond the carpet (else grey concrete)
-  bool court_lines = true;         ///< other sports' lines on that floor
-  bool walls = true;               ///< doors, windows, white boards, banners
-  int people = 8;                  ///< spectators standing around the carpet
-  bool own_feet = true;            ///< the robot's own feet (visible from nao-bottom)
-  bool shadows = true;             ///< soft contact shadows of robots and ball
-  double room_margin_m = 3.0;      ///< floor between the carpet edge and the walls
-  double robot_height_m = 0.0;     ///< 0: from the field (SPL 0.58, kid 0.8, adult 1.4)
-  int random_robots = 0;           ///< extra robots walking around, placed by the seed
+  bool goal_frame = true;       ///< the white frame lying on the ground behind the goal line
+  bool gym_floor = true;        ///< wooden floor beyond the carpet (else grey concrete)
+  bool court_lines = true;      ///< other sports' lines on that floor
+  bool walls = true;            ///< doors, windows, white boards, banners
+  int people = 8;               ///< spectators standing around the carpet
+  bool own_feet = true;         ///< the robot's own feet (visible from nao-bottom)
+  bool shadows = true;          ///< soft contact shadows of robots and ball
+  double room_margin_m = 3.0;   ///< floor between the carpet edge and the walls
+  double robot_height_m = 0.0;  ///< 0: from the field (SPL 0.58, kid 0.8, adult 1.4)
+  int random_robots = 0;        ///< extra robots walking around, placed by the seed
 };
 
 struct LightChange {
   double t_s = 0.0;
-  double exposure = 1.0;             ///< brightness gain from then on
+  double exposure = 1.0;  ///< brightness gain from then on
   double color_temperature_k = 5500.0;
-  double ramp_s = 0.5;               ///< auto exposure / white balance settling time
+  double ramp_s = 0.5;  ///< auto exposure / white balance settling time
 };
 
 /// The camera as a sensor: exposure, optics and noise.
 struct SensorConfig {
-  double exposure = 1.0;               ///< brightness gain
-  double color_temperature_k = 5500.0; ///< light colour the white balance does not cancel
+  double exposure = 1.0;                ///< brightness gain
+  double color_temperature_k = 5500.0;  ///< light colour the white balance does not cancel
   std::vector<LightChange> light_changes;
-  double vignetting = 0.25;            ///< brightness loss in the image corners (fraction)
-  double optics_blur_px = 0.6;         ///< Gaussian sigma of the lens blur
+  double vignetting = 0.25;     ///< brightness loss in the image corners (fraction)
+  double optics_blur_px = 0.6;  ///< Gaussian sigma of the lens blur
   bool motion_blur = true;
-  double exposure_time_ms = 4.0;       ///< motion blur length
-  double noise_sigma = 3.0;            ///< Gaussian sensor noise, 8-bit units
-  double shot_noise = 2.0;             ///< extra sigma at full brightness (sqrt law)
-  bool yuv422 = true;                  ///< halve the chroma resolution like the NAO's cameras
-  int supersampling = 1;               ///< rays per pixel along each axis
-  std::string image_format = "jpg";    ///< jpg | png
+  double exposure_time_ms = 4.0;     ///< motion blur length
+  double noise_sigma = 3.0;          ///< Gaussian sensor noise, 8-bit units
+  double shot_noise = 2.0;           ///< extra sigma at full brightness (sqrt law)
+  bool yuv422 = true;                ///< halve the chroma resolution like the NAO's cameras
+  int supersampling = 1;             ///< rays per pixel along each axis
+  std::string image_format = "jpg";  ///< jpg | png
   int jpeg_quality = 90;
 };
 
 /// The recorded camera pose differs from the rendered one (calibration error, DESIGN §5.4).
 struct CameraPoseError {
-  Pose3 bias;                   ///< added to the rendered x, y, z (m), roll, pitch, yaw (rad)
-  double noise_deg = 0.0;       ///< per-frame Gaussian noise on roll, pitch and yaw
+  Pose3 bias;              ///< added to the rendered x, y, z (m), roll, pitch, yaw (rad)
+  double noise_deg = 0.0;  ///< per-frame Gaussian noise on roll, pitch and yaw
 };
 
 struct HintConfig {
@@ -147,8 +147,8 @@ struct Scenario {
   double fps = 30.0;
   int frames = 300;
   std::uint32_t seed = 1;
-  std::string field;   ///< standard name or map file; the command line overrides it
-  std::string camera;  ///< preset name or camera.yaml; the command line overrides it
+  std::string field;                  ///< standard name or map file; the command line overrides it
+  std::string camera;                 ///< preset name or camera.yaml; the command line overrides it
   std::optional<Pose3> camera_mount;  ///< robot_T_camera instead of the preset's
   TrajectoryConfig trajectory;
   HeadConfig head;

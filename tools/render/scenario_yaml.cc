@@ -20,7 +20,8 @@ std::vector<double> numbers(const cv::FileNode& node, const std::string& name, s
                              " numbers");
   }
   std::vector<double> out;
-  for (size_t i = 0; i < node.size(); ++i) out.push_back(yamlNumber(node[static_cast<int>(i)], name));
+  for (size_t i = 0; i < node.size(); ++i)
+    out.push_back(yamlNumber(node[static_cast<int>(i)], name));
   return out;
 }
 

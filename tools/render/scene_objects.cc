@@ -68,8 +68,8 @@ SceneObjects makePeople(const FieldModel& field, const SceneConfig& scene, const
   SceneObjects out;
   std::mt19937 rng(seed * 13u + 1u);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  const std::vector<Eigen::Vector3f> shirts = {
-      {230, 230, 230}, {40, 40, 40}, {160, 60, 30}, {40, 40, 170}, {60, 130, 60}, {30, 170, 220}};
+  const std::vector<Eigen::Vector3f> shirts = {{230, 230, 230}, {40, 40, 40},  {160, 60, 30},
+                                               {40, 40, 170},   {60, 130, 60}, {30, 170, 220}};
   const std::vector<Eigen::Vector3f> skins = {{150, 180, 225}, {90, 120, 170}, {60, 80, 115}};
   const double ox = field.outerHalfLength(), oy = field.outerHalfWidth();
   for (int i = 0; i < scene.people; ++i) {
@@ -78,16 +78,25 @@ SceneObjects makePeople(const FieldModel& field, const SceneConfig& scene, const
     const double gap = 0.3 + (std::max(0.4, room.half_x - ox) - 0.6) * u(rng);
     const double along = 2.0 * u(rng) - 1.0;
     switch (static_cast<int>(u(rng) * 4.0)) {
-      case 0: x = ox + gap, y = along * (oy + 0.5); break;
-      case 1: x = -ox - gap, y = along * (oy + 0.5); break;
-      case 2: y = oy + gap, x = along * (ox + 0.5); break;
-      default: y = -oy - gap, x = along * (ox + 0.5); break;
+      case 0:
+        x = ox + gap, y = along * (oy + 0.5);
+        break;
+      case 1:
+        x = -ox - gap, y = along * (oy + 0.5);
+        break;
+      case 2:
+        y = oy + gap, x = along * (ox + 0.5);
+        break;
+      default:
+        y = -oy - gap, x = along * (ox + 0.5);
+        break;
     }
     const double h = 1.55 + 0.35 * u(rng);
     const Pose2 pose(x, y, std::atan2(-y, -x) + 0.6 * (u(rng) - 0.5));  // facing the field
     const Material shirt{shirts[static_cast<size_t>(u(rng) * 5.99)], Pattern::kPlain};
     const Material skin{skins[static_cast<size_t>(u(rng) * 2.99)], Pattern::kSkin};
-    const Material legs{Eigen::Vector3f(90, 60, 40) * (0.6f + 0.6f * float(u(rng))), Pattern::kPlain};
+    const Material legs{Eigen::Vector3f(90, 60, 40) * (0.6f + 0.6f * float(u(rng))),
+                        Pattern::kPlain};
     auto& p = out.primitives;
     for (double side : {-1.0, 1.0}) {
       p.push_back(makeCapsule(place(pose, 1.0, 0.0, side * 0.1, 0.06),
@@ -112,8 +121,8 @@ void addRobot(const Pose2& pose, double height_m, const Eigen::Vector3f& jersey,
   auto& p = out.primitives;
   for (double side : {-1.0, 1.0}) {
     const double fx = side * swing;
-    p.push_back(makeBox(place(pose, s, fx + 0.02, side * 0.05, 0.02),
-                        s * V3(0.08, 0.045, 0.02), pose.theta, kShell));
+    p.push_back(makeBox(place(pose, s, fx + 0.02, side * 0.05, 0.02), s * V3(0.08, 0.045, 0.02),
+                        pose.theta, kShell));
     p.push_back(makeCapsule(place(pose, s, fx, side * 0.05, 0.06),
                             place(pose, s, 0.5 * fx, side * 0.05, 0.18), s * 0.037, kShell));
     p.push_back(makeCapsule(place(pose, s, 0.5 * fx, side * 0.05, 0.2),
@@ -146,8 +155,8 @@ void addOwnFeet(const Pose2& pose, double height_m, double gait, bool walking, S
 void addBall(const Eigen::Vector2d& c, double diameter_m, const Eigen::Matrix3d& spin,
              SceneObjects& out) {
   const double r = 0.5 * diameter_m;
-  Primitive ball = makeSphere(V3(c.x(), c.y(), r), r,
-                              Material{Eigen::Vector3f(235, 235, 235), Pattern::kBall});
+  Primitive ball =
+      makeSphere(V3(c.x(), c.y(), r), r, Material{Eigen::Vector3f(235, 235, 235), Pattern::kBall});
   ball.pattern_rotation = spin;
   out.primitives.push_back(ball);
   out.shadows.push_back({c.cast<float>(), float(0.8 * r), 0.55f});

@@ -71,8 +71,7 @@ cv::Mat3b SensorModel::apply(const cv::Mat3f& scene, const ExposureState& exposu
     scene.copyTo(img);
   }
   if (config_.motion_blur && motion_px.norm() > 0.5) {
-    cv::filter2D(img, img, -1, motionKernel(motion_px), cv::Point(-1, -1), 0.0,
-                 cv::BORDER_REFLECT);
+    cv::filter2D(img, img, -1, motionKernel(motion_px), cv::Point(-1, -1), 0.0, cv::BORDER_REFLECT);
   }
   if (config_.optics_blur_px > 0.0) {
     cv::GaussianBlur(img, img, cv::Size(), config_.optics_blur_px, 0.0, cv::BORDER_REFLECT);
@@ -100,7 +99,9 @@ cv::Mat3b SensorModel::apply(const cv::Mat3f& scene, const ExposureState& exposu
     if (config_.yuv422) {
       // Average the chroma of pixel pairs (BT.601), keep each pixel's luma.
       for (int c = 0; c + 1 < width_; c += 2) {
-        auto luma = [](const cv::Vec3f& b) { return 0.114f * b[0] + 0.587f * b[1] + 0.299f * b[2]; };
+        auto luma = [](const cv::Vec3f& b) {
+          return 0.114f * b[0] + 0.587f * b[1] + 0.299f * b[2];
+        };
         const float y0 = luma(p[c]), y1 = luma(p[c + 1]);
         const float cb = 0.5f * ((p[c][0] - y0) + (p[c + 1][0] - y1));
         const float cr = 0.5f * ((p[c][2] - y0) + (p[c + 1][2] - y1));

@@ -146,9 +146,8 @@ double Trajectory::pan(double t) const {
     }
     return k.back().pan_deg * kDeg;
   }
-  const double sweep = head_sweeps_ ? h.sweep_amplitude_deg *
-                                          std::sin(2.0 * M_PI * t / h.sweep_period_s)
-                                    : 0.0;
+  const double sweep =
+      head_sweeps_ ? h.sweep_amplitude_deg * std::sin(2.0 * M_PI * t / h.sweep_period_s) : 0.0;
   return (h.pan_deg + sweep) * kDeg;
 }
 

@@ -15,13 +15,13 @@ double directionDeg(const Eigen::Vector2d& d) {
 
 }  // namespace
 
-VisibilityCounter::VisibilityCounter(const FieldModel& field, double spacing,
-                                     double max_range_m)
+VisibilityCounter::VisibilityCounter(const FieldModel& field, double spacing, double max_range_m)
     : max_range_m_(max_range_m) {
   auto add_line = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b, int feature) {
     const double len = (b - a).norm();
     const int n = std::max(1, static_cast<int>(std::ceil(len / spacing)));
-    for (int i = 0; i < n; ++i) samples_.push_back({a + (b - a) * ((i + 0.5) / n), len / n, feature});
+    for (int i = 0; i < n; ++i)
+      samples_.push_back({a + (b - a) * ((i + 0.5) / n), len / n, feature});
   };
   for (size_t i = 0; i < field.segments.size(); ++i) {
     names_.push_back(describeFeature(FeatureRef{FeatureKind::kSegment, static_cast<int>(i)}));
@@ -49,8 +49,7 @@ VisibilityCounter::VisibilityCounter(const FieldModel& field, double spacing,
   }
 }
 
-std::vector<VisibleRecord> VisibilityCounter::count(std::int64_t t_us,
-                                                    const Pose2& field_T_robot,
+std::vector<VisibleRecord> VisibilityCounter::count(std::int64_t t_us, const Pose2& field_T_robot,
                                                     const CameraModel& camera,
                                                     const FrameView& view, const RayTable& rays,
                                                     const RenderBuffers& buffers) const {
@@ -62,13 +61,14 @@ std::vector<VisibleRecord> VisibilityCounter::count(std::int64_t t_us,
     const Eigen::Vector2d p_robot = robot_T_field.transform(s.p_field);
     const auto pixel = camera.project(Eigen::Vector3d(p_robot.x(), p_robot.y(), 0.0));
     if (!pixel || !camera.inImage(*pixel)) continue;
-    const int col = std::clamp(static_cast<int>(std::lround((pixel->x() + 0.5) * ss - 0.5)), 0,
-                               rays.width - 1);
+    const int col =
+        std::clamp(static_cast<int>(std::lround((pixel->x() + 0.5) * ss - 0.5)), 0, rays.width - 1);
     const int row = std::clamp(static_cast<int>(std::lround((pixel->y() + 0.5) * ss - 0.5)), 0,
                                rays.height - 1);
     const int idx = rays.index(col, row);
     const Eigen::Vector3d ray = view.field_R_camera * rays.ray[idx].cast<double>();
-    const Eigen::Vector3d to_point = Eigen::Vector3d(s.p_field.x(), s.p_field.y(), 0.0) - view.origin;
+    const Eigen::Vector3d to_point =
+        Eigen::Vector3d(s.p_field.x(), s.p_field.y(), 0.0) - view.origin;
     const double dist = to_point.norm();
     // The rendered pixel must really look at the sample (guards against a lens model folding
     // far-off-axis points back into the image), and nothing opaque may stand in front of it.

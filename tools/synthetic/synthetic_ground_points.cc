@@ -36,7 +36,9 @@ void sampleMark(const Mark& m, double spacing, int feature, std::vector<Sample>&
   if (m.shape == MarkShape::kDot) {
     out.push_back({m.center, feature});
     for (int k = 0; k < 4; ++k) {
-      out.push_back({m.center + 0.5 * h * Eigen::Vector2d(std::cos(k * M_PI / 2), std::sin(k * M_PI / 2)), feature});
+      out.push_back(
+          {m.center + 0.5 * h * Eigen::Vector2d(std::cos(k * M_PI / 2), std::sin(k * M_PI / 2)),
+           feature});
     }
     return;
   }
@@ -50,9 +52,12 @@ void sampleMark(const Mark& m, double spacing, int feature, std::vector<Sample>&
 /// All features of the map in one list: segments, arcs, marks.
 std::vector<FeatureRef> featureList(const FieldModel& field) {
   std::vector<FeatureRef> out;
-  for (int i = 0; i < static_cast<int>(field.segments.size()); ++i) out.push_back({FeatureKind::kSegment, i});
-  for (int i = 0; i < static_cast<int>(field.arcs.size()); ++i) out.push_back({FeatureKind::kArc, i});
-  for (int i = 0; i < static_cast<int>(field.marks.size()); ++i) out.push_back({FeatureKind::kMark, i});
+  for (int i = 0; i < static_cast<int>(field.segments.size()); ++i)
+    out.push_back({FeatureKind::kSegment, i});
+  for (int i = 0; i < static_cast<int>(field.arcs.size()); ++i)
+    out.push_back({FeatureKind::kArc, i});
+  for (int i = 0; i < static_cast<int>(field.marks.size()); ++i)
+    out.push_back({FeatureKind::kMark, i});
   return out;
 }
 
@@ -63,9 +68,11 @@ std::vector<Sample> sampleField(const FieldModel& field, const std::vector<Featu
   for (int f = 0; f < static_cast<int>(features.size()); ++f) {
     const FeatureRef& ref = features[f];
     const double ph = rng ? phase(*rng) : 0.0;
-    if (ref.kind == FeatureKind::kSegment) sampleSegment(field.segments[ref.index], spacing, ph, f, out);
+    if (ref.kind == FeatureKind::kSegment)
+      sampleSegment(field.segments[ref.index], spacing, ph, f, out);
     if (ref.kind == FeatureKind::kArc) sampleArc(field.arcs[ref.index], spacing, ph, f, out);
-    if (ref.kind == FeatureKind::kMark && marks) sampleMark(field.marks[ref.index], spacing, f, out);
+    if (ref.kind == FeatureKind::kMark && marks)
+      sampleMark(field.marks[ref.index], spacing, f, out);
   }
   return out;
 }
@@ -96,12 +103,15 @@ SyntheticFrame generateFrame(const FieldModel& field, const Pose2& field_T_robot
 
   std::vector<Occluder> occluders;
   for (int k = 0; k < config.occluders; ++k) {
-    const double r = view.min_range_m + 0.3 + uniform(rng) * 0.5 * (view.max_range_m - view.min_range_m);
+    const double r =
+        view.min_range_m + 0.3 + uniform(rng) * 0.5 * (view.max_range_m - view.min_range_m);
     const double phi = (2.0 * uniform(rng) - 1.0) * view.half_angle_rad;
-    occluders.push_back({r * Eigen::Vector2d(std::cos(phi), std::sin(phi)), config.occluder_radius_m});
+    occluders.push_back(
+        {r * Eigen::Vector2d(std::cos(phi), std::sin(phi)), config.occluder_radius_m});
   }
   auto visible = [&](const Eigen::Vector2d& p_robot) {
-    return wedgeVisible(p_robot, view.half_angle_rad, view.min_range_m, view.max_range_m, occluders);
+    return wedgeVisible(p_robot, view.half_angle_rad, view.min_range_m, view.max_range_m,
+                        occluders);
   };
 
   // Ground truth of what is in view: a fine, noise-free sampling.
@@ -132,7 +142,8 @@ SyntheticFrame generateFrame(const FieldModel& field, const Pose2& field_T_robot
     g.p_robot = p + sigma * Eigen::Vector2d(gauss(rng), gauss(rng));
     frame.ground.points.push_back(g);
   }
-  const int outliers = static_cast<int>(std::round(config.outlier_share * frame.ground.points.size()));
+  const int outliers =
+      static_cast<int>(std::round(config.outlier_share * frame.ground.points.size()));
   for (int k = 0, tries = 0; k < outliers && tries < 100 * (outliers + 1); ++tries) {
     const double r = view.min_range_m + uniform(rng) * (view.max_range_m - view.min_range_m);
     const double phi = (2.0 * uniform(rng) - 1.0) * view.half_angle_rad;
@@ -155,8 +166,8 @@ SyntheticFrame generateFrame(const FieldModel& field, const Pose2& field_T_robot
                                      Eigen::Vector2d(hx, hy), Eigen::Vector2d(-hx, hy)}) {
       carpet.push_back(robot_T_field.transform(c));
     }
-    GroundPolygon region = visibleRegion(view.half_angle_rad, view.min_range_m, view.max_range_m,
-                                         occluders, carpet);
+    GroundPolygon region =
+        visibleRegion(view.half_angle_rad, view.min_range_m, view.max_range_m, occluders, carpet);
     if (region.size() >= 3) frame.ground.visible_regions.push_back(region);
   }
   return frame;
@@ -165,8 +176,10 @@ SyntheticFrame generateFrame(const FieldModel& field, const Pose2& field_T_robot
 bool hasTwoDirections(const SyntheticFrame& frame) {
   std::vector<std::pair<double, double>> lines;  // direction, length
   for (const VisibleFeature& v : frame.visible) {
-    if (v.feature.kind == FeatureKind::kArc && v.feature.index == 0 && v.length_m >= 1.0) return true;
-    if (v.feature.kind == FeatureKind::kSegment && v.length_m >= 0.5) lines.emplace_back(v.direction_rad, v.length_m);
+    if (v.feature.kind == FeatureKind::kArc && v.feature.index == 0 && v.length_m >= 1.0)
+      return true;
+    if (v.feature.kind == FeatureKind::kSegment && v.length_m >= 0.5)
+      lines.emplace_back(v.direction_rad, v.length_m);
   }
   for (std::size_t i = 0; i < lines.size(); ++i) {
     for (std::size_t j = i + 1; j < lines.size(); ++j) {

@@ -34,8 +34,8 @@ struct SyntheticConfig {
   double outlier_share = 0.05;    ///< extra random points in view, share of the line points
   int occluders = 0;              ///< robots standing in view (discs hiding what is behind)
   double occluder_radius_m = 0.2;
-  bool marks = true;              ///< report points on the marks
-  bool visible_region = true;     ///< fill GroundPoints::visible_regions
+  bool marks = true;           ///< report points on the marks
+  bool visible_region = true;  ///< fill GroundPoints::visible_regions
   std::uint64_t seed = 1;
 };
 
@@ -43,8 +43,8 @@ struct SyntheticConfig {
 /// truth/visible.csv (DESIGN §5.1).
 struct VisibleFeature {
   FeatureRef feature;
-  double length_m = 0.0;      ///< visible length
-  double direction_rad = 0.0; ///< segment direction in [0, pi); NaN for arcs and marks
+  double length_m = 0.0;       ///< visible length
+  double direction_rad = 0.0;  ///< segment direction in [0, pi); NaN for arcs and marks
 };
 
 struct SyntheticFrame {

@@ -44,8 +44,8 @@ GroundPolygon clipByEdge(const GroundPolygon& poly, const Eigen::Vector2d& a,
 
 }  // namespace
 
-bool wedgeVisible(const Eigen::Vector2d& p, double half_angle, double min_range,
-                  double max_range, const std::vector<Occluder>& occluders) {
+bool wedgeVisible(const Eigen::Vector2d& p, double half_angle, double min_range, double max_range,
+                  const std::vector<Occluder>& occluders) {
   const double r = p.norm();
   if (r < min_range || r > max_range) return false;
   const double phi = std::atan2(p.y(), p.x());

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "field_models/standard_fields.h"
+#include "tools/render/recording_renderer.h"
+#include "vision/camera_presets.h"
+
+namespace houghloc {
+
+/// A render job for a standard field and camera preset into a fresh folder of the build tree.
+inline RenderJob testJob(const std::string& field, const std::string& camera,
+                         const std::string& folder) {
+  RenderJob job;
+  job.field = makeStandardField(field);
+  const CameraPreset preset = cameraPreset(camera);
+  job.intrinsics = preset.intrinsics;
+  job.mount = preset.robot_T_camera;
+  job.out_dir = std::string(HOUGHLOC_BINARY_DIR) + "/test_renders/" + folder;
+  std::filesystem::remove_all(job.out_dir);
+  return job;
+}
+
+}  // namespace houghloc

@@ -1,0 +1,84 @@
+#include "vision/field_color.h"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+namespace houghloc {
+namespace {
+
+/// Background strip on top, turf below with a left-to-right lighting gradient, a dark shadow,
+/// some white lines; then a per-channel gain (colour temperature, exposure).
+cv::Mat turfImage(const cv::Vec3d& gain) {
+  cv::Mat image(240, 320, CV_8UC3);
+  cv::RNG rng(7);
+  for (int v = 0; v < image.rows; ++v) {
+    for (int u = 0; u < image.cols; ++u) {
+      cv::Vec3d colour(150, 130, 120);  // wall
+      if (v >= 60) {
+        const double light = 1.0 - 0.5 * u / image.cols;  // gradient
+        const double shadow = (u < 100 && v > 150) ? 0.5 : 1.0;
+        colour = cv::Vec3d(45, 150, 60) * light * shadow + cv::Vec3d::all(rng.gaussian(5.0));
+      }
+      for (int c = 0; c < 3; ++c)
+        image.at<cv::Vec3b>(v, u)[c] = cv::saturate_cast<uchar>(colour[c] * gain[c]);
+    }
+  }
+  cv::line(image, {0, 120}, {319, 110}, cv::Scalar(230 * gain[0], 230 * gain[1], 230 * gain[2]), 4);
+  cv::line(image, {100, 239}, {160, 61}, cv::Scalar(230 * gain[0], 230 * gain[1], 230 * gain[2]),
+           5);
+  return image;
+}
+
+double share(const cv::Mat& image, const FieldColor& color, cv::Rect area, bool field) {
+  int hits = 0;
+  for (int v = area.y; v < area.y + area.height; ++v) {
+    for (int u = area.x; u < area.x + area.width; ++u) {
+      const uchar* p = image.ptr<uchar>(v) + 3 * u;
+      hits += field ? color.isField(p) : color.isWhitish(p);
+    }
+  }
+  return static_cast<double>(hits) / area.area();
+}
+
+class FieldColorLight : public ::testing::TestWithParam<cv::Vec3d> {};
+
+TEST_P(FieldColorLight, FollowsGradientShadowTemperatureAndExposure) {
+  const cv::Mat image = turfImage(GetParam());
+  const FieldColor color = estimateFieldColor(image, std::vector<int>(image.cols, 0));
+  ASSERT_TRUE(color.valid);
+  // Turf: bright left, dark right, in the shadow.
+  EXPECT_GT(share(image, color, {0, 125, 60, 20}, true), 0.97);
+  EXPECT_GT(share(image, color, {250, 70, 60, 30}, true), 0.97);
+  EXPECT_GT(share(image, color, {10, 170, 80, 60}, true), 0.95);
+  // The wall and the lines are not turf; lines are white.
+  EXPECT_LT(share(image, color, {0, 0, 320, 50}, true), 0.01);
+  EXPECT_EQ(share(image, color, {10, 118, 1, 1}, true), 0.0);
+  EXPECT_EQ(share(image, color, {10, 118, 1, 1}, false), 1.0);
+  EXPECT_LT(share(image, color, {0, 125, 60, 20}, false), 0.01);
+}
+
+INSTANTIATE_TEST_SUITE_P(Light, FieldColorLight,
+                         ::testing::Values(cv::Vec3d(1.0, 1.0, 1.0),    // neutral
+                                           cv::Vec3d(0.7, 1.0, 1.3),    // warm light
+                                           cv::Vec3d(1.3, 1.0, 0.75),   // cold light
+                                           cv::Vec3d(0.6, 0.6, 0.6),    // under-exposed
+                                           cv::Vec3d(1.5, 1.5, 1.5)));  // over-exposed
+
+TEST(FieldColor, NoFieldInAGreyImage) {
+  cv::Mat grey(120, 160, CV_8UC3, cv::Scalar(128, 128, 128));
+  cv::randn(grey, cv::Scalar::all(128), cv::Scalar::all(3));
+  EXPECT_FALSE(estimateFieldColor(grey, std::vector<int>(grey.cols, 0)).valid);
+  const cv::Mat black = cv::Mat::zeros(120, 160, CV_8UC3);
+  EXPECT_FALSE(estimateFieldColor(black, std::vector<int>(black.cols, 0)).valid);
+}
+
+TEST(FieldColor, SamplesOnlyBelowTheStartRows) {
+  const cv::Mat image = turfImage({1, 1, 1});
+  // Nothing below the start rows: no samples, no field.
+  EXPECT_FALSE(estimateFieldColor(image, std::vector<int>(image.cols, image.rows)).valid);
+}
+
+}  // namespace
+}  // namespace houghloc

@@ -1,0 +1,155 @@
+#include "vision/vision_pipeline.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <opencv2/imgproc.hpp>
+#include <ostream>
+#include <stdexcept>
+
+#include "vision/image_conversion.h"
+#include "vision_test_views.h"
+
+namespace houghloc {
+namespace {
+
+using testing::PointScore;
+using testing::TestView;
+
+struct ViewCase {
+  const char* preset;
+  const char* field;
+  Pose2 pose;
+  size_t min_points;
+};
+
+void PrintTo(const ViewCase& c, std::ostream* os) { *os << c.preset << "/" << c.field; }
+
+std::vector<Eigen::Vector2d> groundOf(const VisionResult& result) {
+  std::vector<Eigen::Vector2d> points;
+  for (const GroundPoint& p : result.ground.points) points.push_back(p.p_robot);
+  return points;
+}
+
+VisionConfig configFor(const TestView& view) {
+  VisionConfig config;
+  config.line_width_m = view.field.line_width;
+  return config;
+}
+
+class PipelineOnViews : public ::testing::TestWithParam<ViewCase> {};
+
+TEST_P(PipelineOnViews, PointsLieOnTheLines) {
+  const ViewCase& c = GetParam();
+  testing::SyntheticStyle style;
+  style.gradient = 0.35;
+  style.noise_sigma = 4.0;
+  const TestView& view = testing::testView(c.preset, c.field, c.pose, style);
+  VisionPipeline pipeline(view.preset.intrinsics, configFor(view));
+  const VisionResult result = pipeline.process(view.image, view.preset.robot_T_camera, 42);
+  EXPECT_EQ(result.ground.t_us, 42);
+  const PointScore score = testing::scorePoints(view, groundOf(result));
+  EXPECT_GE(score.points, c.min_points);
+  EXPECT_GE(score.precision, 0.98);
+  EXPECT_LE(score.median_error_m, 0.01);
+  ASSERT_EQ(result.ground.visible_regions.size(), 1u);
+  EXPECT_GE(result.ground.visible_regions[0].size(), 4u);
+  for (const GroundPoint& p : result.ground.points) {
+    EXPECT_LE(p.p_robot.norm(), pipeline.config().projection.max_range_m + 1e-9);
+    EXPECT_GT(p.weight, 0.0);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(PresetsAndFields, PipelineOnViews,
+                         ::testing::Values(ViewCase{"nao-top", "spl", Pose2(-2.0, -1.0, 0.5), 100},
+                                           ViewCase{"nao-top", "kid", Pose2(2.5, 1.0, -0.3), 100},
+                                           ViewCase{"nao-bottom", "spl", Pose2(-0.35, 0.2, 0.1),
+                                                    10},
+                                           ViewCase{"kid-wide", "kid", Pose2(-3.0, -1.5, 0.3), 100},
+                                           ViewCase{"adult", "adult", Pose2(-3.0, -1.0, 0.2), 100},
+                                           ViewCase{"adult", "msl", Pose2(-6.0, -3.0, 0.4), 30}));
+
+const TestView& naoView() {
+  testing::SyntheticStyle style;
+  style.gradient = 0.3;
+  style.noise_sigma = 3.0;
+  return testing::testView("nao-top", "spl", Pose2(-2.0, -1.0, 0.5), style);
+}
+
+TEST(VisionPipeline, YuyvInputGivesTheSamePoints) {
+  const TestView& view = naoView();
+  VisionPipeline bgr_pipeline(view.preset.intrinsics, configFor(view));
+  VisionPipeline yuyv_pipeline(view.preset.intrinsics, configFor(view));
+  const VisionResult from_bgr = bgr_pipeline.process(view.image, view.preset.robot_T_camera);
+  const VisionResult from_yuyv =
+      yuyv_pipeline.process(bgrToYuyv(view.image), view.preset.robot_T_camera);
+  const PointScore score = testing::scorePoints(view, groundOf(from_yuyv));
+  EXPECT_GE(score.precision, 0.98);
+  EXPECT_NEAR(static_cast<double>(from_yuyv.ground.size()),
+              static_cast<double>(from_bgr.ground.size()), 0.15 * from_bgr.ground.size());
+}
+
+TEST(VisionPipeline, WhiteObjectsOnTheFieldGiveNoPoints) {
+  const TestView& view = naoView();
+  cv::Mat image = view.image.clone();
+  const CameraModel camera(view.preset.intrinsics, view.preset.robot_T_camera);
+  // A ball (0.1 m) and a robot's white leg (0.12 m wide, 0.5 m tall) on open turf.
+  const auto pixel = [&](double x, double y, double z) {
+    const auto p = camera.project({x, y, z});
+    return cv::Point(static_cast<int>(p->x()), static_cast<int>(p->y()));
+  };
+  const cv::Point ball = pixel(1.0, -0.2, 0.05);
+  const int ball_radius = pixel(1.0, -0.25, 0.05).x - ball.x;
+  cv::circle(image, ball, std::abs(ball_radius), cv::Scalar(240, 240, 240), cv::FILLED,
+             cv::LINE_AA);
+  cv::rectangle(image, pixel(1.3, 0.5, 0.5), pixel(1.3, 0.38, 0.0), cv::Scalar(235, 235, 235),
+                cv::FILLED);
+  VisionPipeline pipeline(view.preset.intrinsics, configFor(view));
+  const VisionResult result = pipeline.process(image, view.preset.robot_T_camera);
+  const PointScore score = testing::scorePoints(view, groundOf(result));
+  EXPECT_GE(score.precision, 0.98);
+  EXPECT_GE(score.points, 30u);
+}
+
+TEST(VisionPipeline, DegenerateImagesGiveFewPoints) {
+  const TestView& view = naoView();
+  VisionPipeline pipeline(view.preset.intrinsics, configFor(view));
+  const cv::Size size = view.image.size();
+  cv::Mat noise(size, CV_8UC3);
+  cv::randu(noise, cv::Scalar::all(0), cv::Scalar::all(255));
+  for (const cv::Mat& image : {cv::Mat(cv::Mat::zeros(size, CV_8UC3)),
+                               cv::Mat(size, CV_8UC3, cv::Scalar::all(255)), noise}) {
+    EXPECT_LE(pipeline.process(image, view.preset.robot_T_camera).ground.size(), 5u);
+  }
+  // Sky only: the camera pitched 40 deg up sees no ground at all.
+  Pose3 up = view.preset.robot_T_camera;
+  up.pitch = -0.7;
+  const VisionResult sky = pipeline.process(view.image, up);
+  EXPECT_EQ(sky.ground.size(), 0u);
+  EXPECT_TRUE(sky.ground.visible_regions.empty());
+}
+
+TEST(VisionPipeline, BadInputThrowsAClearError) {
+  const TestView& view = naoView();
+  VisionPipeline pipeline(view.preset.intrinsics, configFor(view));
+  Pose3 nan_pose = view.preset.robot_T_camera;
+  nan_pose.pitch = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(pipeline.process(view.image, nan_pose), std::invalid_argument);
+  nan_pose = view.preset.robot_T_camera;
+  nan_pose.z = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(pipeline.process(view.image, nan_pose), std::invalid_argument);
+  cv::Mat small;
+  cv::resize(view.image, small, {320, 240});
+  try {
+    pipeline.process(small, view.preset.robot_T_camera);
+    FAIL() << "no exception for a 320x240 image";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("320x240"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(pipeline.process(cv::Mat(480, 640, CV_8UC1), view.preset.robot_T_camera),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace houghloc

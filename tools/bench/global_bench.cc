@@ -1,0 +1,259 @@
+// Benchmarks of global Hough localization (issue 6), one core:
+//   locate() with 100 / 300 / 1000 points on the SPL and MSL maps;
+//   step 1 (HoughTransform) vs cv::HoughLinesPointSet on the same points;
+//   locate() vs the exhaustive grid search on the same frames, with success rates;
+// then a summary of time ratios and success rates side by side.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <map>
+#include <memory>
+#include <opencv2/imgproc.hpp>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "field_models/standard_fields.h"
+#include "localization/global_hough_localizer.h"
+#include "tools/baselines/grid_search.h"
+#include "tools/synthetic/synthetic_ground_points.h"
+
+namespace houghloc {
+namespace {
+
+constexpr int kFrames = 8;  // frames cycled through per benchmark
+
+struct Frame {
+  GroundPoints ground;
+  Pose2 truth;
+};
+
+const FieldModel& field(const std::string& name) {
+  static std::map<std::string, FieldModel> fields;
+  auto it = fields.find(name);
+  if (it == fields.end()) it = fields.emplace(name, makeStandardField(name)).first;
+  return it->second;
+}
+
+const GlobalHoughLocalizer& localizer(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<GlobalHoughLocalizer>> cache;
+  auto& l = cache[name];
+  if (!l) l = std::make_unique<GlobalHoughLocalizer>(field(name));
+  return *l;
+}
+
+const GridSearchLocalizer& gridSearch(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<GridSearchLocalizer>> cache;
+  auto& g = cache[name];
+  if (!g) g = std::make_unique<GridSearchLocalizer>(field(name));
+  return *g;
+}
+
+/// Frames with two directions in view (kid-wide view), exactly `points` points each (even
+/// subsample of a dense frame).
+const std::vector<Frame>& frames(const std::string& name, int points) {
+  static std::map<std::pair<std::string, int>, std::vector<Frame>> cache;
+  auto& out = cache[{name, points}];
+  if (!out.empty()) return out;
+  std::mt19937_64 rng(99);
+  for (int k = 0; static_cast<int>(out.size()) < kFrames && k < 1000; ++k) {
+    SyntheticConfig config;
+    config.view = viewModel("kid-wide");
+    config.point_spacing_m = 0.01;
+    config.seed = 500 + k;
+    const SyntheticFrame f = generateFrame(field(name), randomPose(field(name), 0.3, rng), config);
+    if (!hasTwoDirections(f) || static_cast<int>(f.ground.size()) < points) continue;
+    Frame frame{f.ground, f.field_T_robot};
+    frame.ground.points.clear();
+    const double stride = static_cast<double>(f.ground.size()) / points;
+    for (int i = 0; i < points; ++i)
+      frame.ground.points.push_back(f.ground.points[static_cast<std::size_t>(i * stride)]);
+    out.push_back(frame);
+  }
+  return out;
+}
+
+bool correct(const Pose2& p, const Pose2& truth) {
+  for (const Pose2& t : {truth, Pose2(-truth.x, -truth.y, truth.theta + M_PI)}) {
+    if ((p.translation() - t.translation()).norm() <= 0.10 &&
+        std::abs(angleDifference(p.theta, t.theta)) <= 3.0 * M_PI / 180.0) {
+      return true;
+    }
+  }
+  return false;
+}
+
+const std::vector<std::string> kFields = {"spl", "msl"};
+
+void BM_Locate(benchmark::State& state) {
+  const std::string name = kFields[state.range(0)];
+  const auto& fs = frames(name, static_cast<int>(state.range(1)));
+  const auto& ghl = localizer(name);
+  int k = 0, found = 0, runs = 0;
+  for (auto _ : state) {
+    const Frame& f = fs[k++ % fs.size()];
+    const auto hs = ghl.locate(f.ground);
+    benchmark::DoNotOptimize(hs.data());
+    for (const auto& h : hs) {
+      if (correct(h.field_T_robot, f.truth)) {
+        ++found;
+        break;
+      }
+    }
+    ++runs;
+  }
+  state.SetLabel(name);
+  state.counters["points"] = static_cast<double>(state.range(1));
+  state.counters["success_pct"] = 100.0 * found / std::max(1, runs);
+}
+BENCHMARK(BM_Locate)->ArgsProduct({{0, 1}, {100, 300, 1000}})->Unit(benchmark::kMillisecond);
+
+void BM_GridSearch(benchmark::State& state) {
+  const std::string name = kFields[state.range(0)];
+  const auto& fs = frames(name, 300);
+  const auto& grid = gridSearch(name);
+  int k = 0, found = 0, runs = 0;
+  for (auto _ : state) {
+    const Frame& f = fs[k++ % fs.size()];
+    const auto optima = grid.locate(f.ground);
+    for (const auto& o : optima) {
+      if (correct(o.field_T_robot, f.truth)) {
+        ++found;
+        break;
+      }
+    }
+    ++runs;
+  }
+  state.SetLabel(name);
+  state.counters["points"] = 300;
+  state.counters["success_pct"] = 100.0 * found / std::max(1, runs);
+}
+BENCHMARK(BM_GridSearch)->Arg(0)->Arg(1)->Iterations(kFrames)->Unit(benchmark::kMillisecond);
+
+/// Step 1 alone: our weighted transform with the localizer's resolution (1 deg, 3 cm).
+void BM_Step1HoughTransform(benchmark::State& state) {
+  const auto& fs = frames("spl", static_cast<int>(state.range(0)));
+  const auto& ghl = localizer("spl");
+  int k = 0;
+  for (auto _ : state) {
+    const WeightedPoints pts = ghl.preparePoints(fs[k++ % fs.size()].ground);
+    const HoughTransform ht = ghl.sensorTransform(pts);
+    benchmark::DoNotOptimize(ht.column(0));
+  }
+  state.counters["points"] = static_cast<double>(state.range(0));
+}
+BENCHMARK(BM_Step1HoughTransform)->Arg(100)->Arg(300)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+/// The OpenCV baseline for step 1: the same accumulator resolution and rho range, plus OpenCV's
+/// own peak extraction (up to 20 lines).
+void BM_Step1CvHoughLinesPointSet(benchmark::State& state) {
+  const auto& fs = frames("spl", static_cast<int>(state.range(0)));
+  int k = 0;
+  for (auto _ : state) {
+    const GroundPoints& g = fs[k++ % fs.size()].ground;
+    std::vector<cv::Point2f> pts;
+    double range = 0.03;
+    for (const auto& p : g.points) {
+      pts.emplace_back(static_cast<float>(p.p_robot.x()), static_cast<float>(p.p_robot.y()));
+      range = std::max(range, p.p_robot.norm());
+    }
+    cv::Mat lines;
+    cv::HoughLinesPointSet(pts, lines, 20, 5, -range, range, 0.03, 0.0, CV_PI, CV_PI / 180.0);
+    benchmark::DoNotOptimize(lines.data);
+  }
+  state.counters["points"] = static_cast<double>(state.range(0));
+}
+BENCHMARK(BM_Step1CvHoughLinesPointSet)
+    ->Arg(100)
+    ->Arg(300)
+    ->Arg(1000)
+    ->Unit(benchmark::kMicrosecond);
+
+double cpuSeconds() {
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+/// Side-by-side summary on the same frames (CPU time, so other load on the machine matters less).
+void printSummary() {
+  std::printf("\nsummary (kid-wide frames with two directions, %d per field, CPU time)\n", kFrames);
+  std::printf("%-5s %6s | %10s %8s | %10s %8s | %8s\n", "field", "points", "GHL ms", "GHL ok",
+              "grid ms", "grid ok", "speedup");
+  for (const std::string& name : kFields) {
+    for (int n : {100, 300, 1000}) {
+      const auto& fs = frames(name, n);
+      int ghl_ok = 0, grid_ok = 0;
+      double t_ghl = 0.0, t_grid = 0.0;
+      for (const Frame& f : fs) {
+        double t0 = cpuSeconds();
+        const auto hs = localizer(name).locate(f.ground);
+        t_ghl += cpuSeconds() - t0;
+        for (const auto& h : hs) {
+          if (correct(h.field_T_robot, f.truth)) {
+            ++ghl_ok;
+            break;
+          }
+        }
+        if (n != 300) continue;  // the grid search only on the 300-point frames
+        t0 = cpuSeconds();
+        const auto optima = gridSearch(name).locate(f.ground);
+        t_grid += cpuSeconds() - t0;
+        for (const auto& o : optima) {
+          if (correct(o.field_T_robot, f.truth)) {
+            ++grid_ok;
+            break;
+          }
+        }
+      }
+      const double m = static_cast<double>(fs.size());
+      if (n == 300) {
+        std::printf("%-5s %6d | %10.3f %7.0f%% | %10.1f %7.0f%% | %7.0fx\n", name.c_str(), n,
+                    1e3 * t_ghl / m, 100.0 * ghl_ok / m, 1e3 * t_grid / m, 100.0 * grid_ok / m,
+                    t_grid / std::max(t_ghl, 1e-9));
+      } else {
+        std::printf("%-5s %6d | %10.3f %7.0f%% | %10s %8s | %8s\n", name.c_str(), n,
+                    1e3 * t_ghl / m, 100.0 * ghl_ok / m, "-", "-", "-");
+      }
+    }
+  }
+  const auto& fs = frames("spl", 300);
+  double t_ours = 0.0, t_cv = 0.0;
+  for (int rep = 0; rep < 20; ++rep) {
+    for (const Frame& f : fs) {
+      double t0 = cpuSeconds();
+      const HoughTransform ht =
+          localizer("spl").sensorTransform(localizer("spl").preparePoints(f.ground));
+      t_ours += cpuSeconds() - t0;
+      benchmark::DoNotOptimize(ht.column(0));
+      std::vector<cv::Point2f> pts;
+      double range = 0.03;
+      for (const auto& p : f.ground.points) {
+        pts.emplace_back(static_cast<float>(p.p_robot.x()), static_cast<float>(p.p_robot.y()));
+        range = std::max(range, p.p_robot.norm());
+      }
+      t0 = cpuSeconds();
+      cv::Mat lines;
+      cv::HoughLinesPointSet(pts, lines, 20, 5, -range, range, 0.03, 0.0, CV_PI, CV_PI / 180.0);
+      t_cv += cpuSeconds() - t0;
+    }
+  }
+  std::printf(
+      "step 1, 300 points: HoughTransform %.1f us, cv::HoughLinesPointSet %.1f us (%.1fx)\n",
+      1e6 * t_ours / (20.0 * fs.size()), 1e6 * t_cv / (20.0 * fs.size()),
+      t_cv / std::max(t_ours, 1e-12));
+}
+
+}  // namespace
+}  // namespace houghloc
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  houghloc::printSummary();
+  return 0;
+}

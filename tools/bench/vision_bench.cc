@@ -1,0 +1,155 @@
+// houghloc-bench-vision: the vision pipeline against a stock-OpenCV baseline on the same rendered
+// frames, one core; prints the time ratio and both methods' precision/recall (issue 5).
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <opencv2/core/utility.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+#include <vector>
+
+#include "tools/offline/vision_metrics.h"
+#include "tools/recording/recording.h"
+#include "vision/vision_pipeline.h"
+#include "vision_baseline.h"
+
+namespace {
+
+using namespace houghloc;
+namespace fs = std::filesystem;
+
+struct BenchSet {
+  std::string name;
+  Recording recording;
+  std::vector<cv::Mat> images;
+};
+
+/// Renders (once per build tree) and loads a recording.
+BenchSet& benchSet(const std::string& name, const std::string& render_args) {
+  static std::map<std::string, BenchSet> sets;
+  auto it = sets.find(name);
+  if (it != sets.end()) return it->second;
+  const fs::path folder = fs::path(HOUGHLOC_BENCH_DIR) / name;
+  if (!fs::exists(folder / ".complete")) {
+    const std::string command = std::string(HOUGHLOC_RENDER_EXE) + " " + render_args +
+                                " --frames 30 -q -o " + folder.string();
+    if (std::system(command.c_str()) != 0) {
+      std::fprintf(stderr, "bench: rendering failed: %s\n", command.c_str());
+      std::exit(1);
+    }
+    std::ofstream(folder / ".complete");
+  }
+  BenchSet set;
+  set.name = name;
+  set.recording = readRecording(folder.string());
+  for (const FrameRecord& frame : set.recording.frames) {
+    set.images.push_back(cv::imread((folder / frame.image).string(), cv::IMREAD_COLOR));
+  }
+  return sets.emplace(name, std::move(set)).first->second;
+}
+
+BenchSet& vga() {
+  return benchSet("vga_nao-top", "--standard spl --camera nao-top --trajectory walk --seed 201");
+}
+BenchSet& hd() {
+  return benchSet("hd_adult", "--standard adult --camera adult --trajectory walk --seed 202");
+}
+
+VisionConfig configFor(const BenchSet& set) {
+  VisionConfig config;
+  config.line_width_m = set.recording.field->line_width;
+  return config;
+}
+
+template <typename Method>
+void runFrames(benchmark::State& state, BenchSet& set, Method&& method) {
+  size_t i = 0;
+  for (auto _ : state) {
+    const FrameRecord& frame = set.recording.frames[i % set.images.size()];
+    benchmark::DoNotOptimize(method(set.images[i % set.images.size()], frame.robot_T_camera));
+    ++i;
+  }
+}
+
+void BM_VisionPipeline(benchmark::State& state, BenchSet& (*get)()) {
+  BenchSet& set = get();
+  VisionPipeline pipeline(set.recording.intrinsicsFor(set.recording.frames[0]), configFor(set));
+  runFrames(state, set, [&](const cv::Mat& image, const Pose3& pose) {
+    return pipeline.process(image, pose).ground.size();
+  });
+}
+
+void BM_OpenCvBaseline(benchmark::State& state, BenchSet& (*get)()) {
+  BenchSet& set = get();
+  OpenCvLineBaseline baseline(set.recording.intrinsicsFor(set.recording.frames[0]));
+  runFrames(state, set, [&](const cv::Mat& image, const Pose3& pose) {
+    return baseline.process(image, pose).size();
+  });
+}
+
+BENCHMARK_CAPTURE(BM_VisionPipeline, 640x480, &vga)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OpenCvBaseline, 640x480, &vga)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionPipeline, 1280x720, &hd)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OpenCvBaseline, 1280x720, &hd)->Unit(benchmark::kMillisecond);
+
+/// Keeps each run's time per iteration (ms) for the ratio table.
+class CollectingReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs) {
+      ms[run.benchmark_name()] = run.GetAdjustedRealTime();  // in the run's unit (ms)
+    }
+  }
+  std::map<std::string, double> ms;
+};
+
+VisionMetrics quality(BenchSet& set, bool baseline) {
+  VisionPipeline pipeline(set.recording.intrinsicsFor(set.recording.frames[0]), configFor(set));
+  OpenCvLineBaseline opencv(set.recording.intrinsicsFor(set.recording.frames[0]));
+  VisionMetricsAccumulator metrics(*set.recording.field);
+  for (size_t i = 0; i < set.images.size(); ++i) {
+    const FrameRecord& frame = set.recording.frames[i];
+    const GroundPoints points = baseline
+                                    ? opencv.process(set.images[i], frame.robot_T_camera)
+                                    : pipeline.process(set.images[i], frame.robot_T_camera).ground;
+    const auto truth = groundTruthAt(set.recording.ground_truth, frame.t_us);
+    if (!truth) continue;
+    const CameraModel camera(set.recording.intrinsicsFor(frame), frame.robot_T_camera);
+    metrics.addFrame(points, *truth, visibleAt(set.recording.visible, frame.t_us), camera);
+  }
+  return metrics.result();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  cv::setNumThreads(1);  // one core, like the pipeline (DESIGN §8)
+  benchmark::Initialize(&argc, argv);
+  CollectingReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  std::printf("\n%-10s %14s %14s %8s   %-28s %-28s\n", "frames", "houghloc ms", "opencv ms",
+              "ratio", "houghloc prec / recall 0-2,2-3,3-4", "opencv prec / recall");
+  for (const auto& [size, get] : {std::pair<std::string, BenchSet& (*)()>{"640x480", &vga},
+                                  std::pair<std::string, BenchSet& (*)()>{"1280x720", &hd}}) {
+    const auto ours = reporter.ms.find("BM_VisionPipeline/" + size);
+    const auto theirs = reporter.ms.find("BM_OpenCvBaseline/" + size);
+    if (ours == reporter.ms.end() || theirs == reporter.ms.end()) continue;
+    BenchSet& set = get();
+    const VisionMetrics a = quality(set, false), b = quality(set, true);
+    const auto text = [](const VisionMetrics& m) {
+      char buffer[64];
+      std::snprintf(buffer, sizeof(buffer), "%.3f / %.2f %.2f %.2f", m.precision, m.bands[0].recall,
+                    m.bands[1].recall, m.bands[2].recall);
+      return std::string(buffer);
+    };
+    std::printf("%-10s %14.3f %14.3f %8.2f   %-28s %-28s\n", size.c_str(), ours->second,
+                theirs->second, theirs->second / ours->second, text(a).c_str(), text(b).c_str());
+  }
+  benchmark::Shutdown();
+  return 0;
+}
