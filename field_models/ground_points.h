@@ -29,4 +29,7 @@ struct GroundPoints {
   bool empty() const { return points.empty(); }
 };
 
+/// True when p lies inside the polygon (even-odd rule).
+bool insidePolygon(const GroundPolygon& polygon, const Eigen::Vector2d& p);
+
 }  // namespace houghloc

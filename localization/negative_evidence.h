@@ -56,9 +56,6 @@ class VisibilityEvidence {
   double density_ = 0.0;
 };
 
-/// True when p lies inside the closed polygon (even-odd rule).
-bool insidePolygon(const GroundPolygon& polygon, const Eigen::Vector2d& p);
-
 /// Distance from p to the polygon's boundary.
 double distanceToBoundary(const GroundPolygon& polygon, const Eigen::Vector2d& p);
 

@@ -54,9 +54,9 @@ TEST(Synthetic, VisibleRegionIsClippedToTheCarpetAndShadowed) {
   const Occluder o{Eigen::Vector2d(2.0, 0.0), 0.3};
   const GroundPolygon big = {{-20, -20}, {20, -20}, {20, 20}, {-20, 20}};
   const GroundPolygon region = visibleRegion(0.5, 0.4, 4.5, {o}, big);
-  EXPECT_TRUE(pointInPolygon(region, {1.5, 0.0}));
-  EXPECT_FALSE(pointInPolygon(region, {3.0, 0.0}));
-  EXPECT_TRUE(pointInPolygon(region, {3.0, 1.2}));
+  EXPECT_TRUE(insidePolygon(region, {1.5, 0.0}));
+  EXPECT_FALSE(insidePolygon(region, {3.0, 0.0}));
+  EXPECT_TRUE(insidePolygon(region, {3.0, 1.2}));
 }
 
 TEST(Synthetic, DirectionClassesFollowDesignMetrics) {

@@ -84,17 +84,4 @@ GroundPolygon visibleRegion(double half_angle, double min_range, double max_rang
   return poly;
 }
 
-bool pointInPolygon(const GroundPolygon& poly, const Eigen::Vector2d& p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const Eigen::Vector2d& a = poly[i];
-    const Eigen::Vector2d& b = poly[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) &&
-        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) {
-      inside = !inside;
-    }
-  }
-  return inside;
-}
-
 }  // namespace houghloc

@@ -22,7 +22,4 @@ bool wedgeVisible(const Eigen::Vector2d& p_robot, double half_angle_rad, double 
 GroundPolygon visibleRegion(double half_angle_rad, double min_range_m, double max_range_m,
                             const std::vector<Occluder>& occluders, const GroundPolygon& clip);
 
-/// Even-odd point-in-polygon test.
-bool pointInPolygon(const GroundPolygon& polygon, const Eigen::Vector2d& p);
-
 }  // namespace houghloc
