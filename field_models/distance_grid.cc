@@ -14,6 +14,7 @@ DistanceGrid::DistanceGrid(const FieldModel& field, const DistanceGridConfig& co
   const double hx = field.outerHalfLength() + config.margin_m;
   const double hy = field.outerHalfWidth() + config.margin_m;
   origin_ = Eigen::Vector2d(-hx, -hy);
+  inv_resolution_ = 1.0 / config.resolution_m;
   cols_ = static_cast<int>(std::ceil(2.0 * hx / config.resolution_m)) + 1;
   rows_ = static_cast<int>(std::ceil(2.0 * hy / config.resolution_m)) + 1;
   values_.resize(static_cast<size_t>(cols_) * rows_);
@@ -28,6 +29,18 @@ DistanceGrid::DistanceGrid(const FieldModel& field, const DistanceGridConfig& co
 }
 
 double DistanceGrid::distance(const Eigen::Vector2d& p_field) const {
+  // Hot path of every scoring loop: inside the grid there is no clamping and no hypot.
+  const double gx = (p_field.x() - origin_.x()) * inv_resolution_;
+  const double gy = (p_field.y() - origin_.y()) * inv_resolution_;
+  if (gx >= 0.0 && gy >= 0.0 && gx < cols_ - 1.0 && gy < rows_ - 1.0) {
+    const int c0 = static_cast<int>(gx), r0 = static_cast<int>(gy);
+    const double fx = gx - c0, fy = gy - r0;
+    const float* row0 = &values_[static_cast<size_t>(r0) * cols_ + c0];
+    const float* row1 = row0 + cols_;
+    const double top = row0[0] + fx * (row0[1] - row0[0]);
+    const double bottom = row1[0] + fx * (row1[1] - row1[0]);
+    return top + fy * (bottom - top);
+  }
   return distance(p_field, nullptr);
 }
 
@@ -40,7 +53,9 @@ double DistanceGrid::distance(const Eigen::Vector2d& p_field, Eigen::Vector2d* g
   // Clamp into the grid; the part outside adds to the distance (a lower bound of the truth).
   const double gx = std::clamp(g.x(), 0.0, cols_ - 1.0);
   const double gy = std::clamp(g.y(), 0.0, rows_ - 1.0);
-  const double outside = config_.resolution_m * std::hypot(g.x() - gx, g.y() - gy);
+  const double ox = g.x() - gx, oy = g.y() - gy;
+  const double outside =
+      ox == 0.0 && oy == 0.0 ? 0.0 : config_.resolution_m * std::sqrt(ox * ox + oy * oy);
   const int c0 = std::min(static_cast<int>(gx), cols_ - 2);
   const int r0 = std::min(static_cast<int>(gy), rows_ - 2);
   const double fx = gx - c0, fy = gy - r0;

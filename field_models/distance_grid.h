@@ -37,6 +37,7 @@ class DistanceGrid {
 
   DistanceGridConfig config_;
   Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
+  double inv_resolution_ = 0.0;
   int cols_ = 0;
   int rows_ = 0;
   std::vector<float> values_;

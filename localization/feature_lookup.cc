@@ -8,7 +8,7 @@
 namespace houghloc {
 
 FeatureLookup::FeatureLookup(const FieldModel& field, double resolution_m, double margin_m)
-    : field_copy_(field), resolution_(resolution_m) {
+    : field_copy_(field), resolution_(resolution_m), inv_resolution_(1.0 / resolution_m) {
   const double hx = field.outerHalfLength() + margin_m, hy = field.outerHalfWidth() + margin_m;
   origin_ = Eigen::Vector2d(-hx, -hy);
   for (const Segment2& s : field.segments) lines_.push_back({s.a, s.direction(), s.length()});
@@ -26,8 +26,8 @@ FeatureLookup::FeatureLookup(const FieldModel& field, double resolution_m, doubl
 FeatureLookup::Residual FeatureLookup::residual(const Eigen::Vector2d& p) const {
   Residual out;
   if (cells_.empty() || !p.allFinite()) return out;
-  const int c = std::clamp(static_cast<int>((p.x() - origin_.x()) / resolution_), 0, cols_ - 1);
-  const int r = std::clamp(static_cast<int>((p.y() - origin_.y()) / resolution_), 0, rows_ - 1);
+  const int c = std::clamp(static_cast<int>((p.x() - origin_.x()) * inv_resolution_), 0, cols_ - 1);
+  const int r = std::clamp(static_cast<int>((p.y() - origin_.y()) * inv_resolution_), 0, rows_ - 1);
   const FeatureRef& f = cells_[static_cast<std::size_t>(r) * cols_ + c];
   if (f.index < 0) return out;
   Eigen::Vector2d q;
@@ -46,7 +46,7 @@ FeatureLookup::Residual FeatureLookup::residual(const Eigen::Vector2d& p) const 
     const Arc2& arc = field_copy_.arcs[f.index];
     const Eigen::Vector2d v = p - arc.center;
     const double n = v.norm();
-    if (n > 1e-9 && arc.containsAngle(std::atan2(v.y(), v.x()))) {
+    if (n > 1e-9 && (arc.isFullCircle() || arc.containsAngle(std::atan2(v.y(), v.x())))) {
       out.direction = v / n;
       out.distance_m = n - arc.radius;
       out.valid = true;

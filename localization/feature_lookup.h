@@ -36,6 +36,7 @@ class FeatureLookup {
   std::vector<Line> lines_;  ///< per segment, precomputed
   Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
   double resolution_ = 0.05;
+  double inv_resolution_ = 20.0;
   int cols_ = 0, rows_ = 0;
   std::vector<FeatureRef> cells_;
 };

@@ -1,10 +1,18 @@
 #include "localization/global_hough_localizer.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
 namespace houghloc {
+namespace {
+
+// Candidates whose coarse refinement ends this close are the same optimum.
+constexpr double kConvergedM = 0.03;
+constexpr double kConvergedRad = 0.01;
+
+}  // namespace
 
 GlobalHoughLocalizer::GlobalHoughLocalizer(const FieldModel& field, const GlobalHoughConfig& config)
     : config_(config), map_(field, config.map) {}
@@ -39,6 +47,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
   }
   scoreCandidates(located, subsamplePoints(points, config_.prescore_points));  // step 4 ...
   located = pruneCandidates(located, config_.pruning);  // ... segment extents
+  located = convergeCandidates(located, subsamplePoints(points, config_.prescore_points));
   const VisibilityEvidence evidence(frame, points, config_.negative);
   std::vector<PoseHypothesis> refined;
   int line_scans = 0;
@@ -104,25 +113,85 @@ std::vector<std::vector<TranslationConstraint>> GlobalHoughLocalizer::translatio
 std::vector<PoseHypothesis> GlobalHoughLocalizer::landmarkPoses(
     const WeightedPoints& points, const std::vector<OrientationCandidate>& headings) const {
   std::vector<PoseHypothesis> out;
-  auto append = [&out](std::vector<PoseHypothesis> more) {
-    out.insert(out.end(), more.begin(), more.end());
+  const WeightedPoints few = subsamplePoints(points, config_.prescore_points);
+  auto append = [&](const Eigen::Vector2d& p_robot, const Eigen::Vector2d& p_field,
+                    HypothesisSource source, double support) {
+    std::vector<OrientationCandidate> all = headings;
+    for (const auto& h : scanHeadings(p_robot, p_field, few)) all.push_back(h);
+    for (auto& h : landmarkCandidates(p_robot, p_field, all, source, support)) out.push_back(h);
   };
   if (config_.use_circle) {
     for (const Arc2& circle : map_.circles()) {
       const auto seen = fitCircle(points, circle.radius, config_.landmarks);
-      if (seen) {
-        append(landmarkCandidates(seen->center, circle.center, headings, HypothesisSource::kCircle,
-                                  seen->support));
-      }
+      if (seen) append(seen->center, circle.center, HypothesisSource::kCircle, seen->support);
     }
   }
   if (config_.use_marks && !map_.field().marks.empty()) {
+    // Marks are small and blobs can be clutter: the step-2 headings only (no scan).
     const double size = map_.field().marks.back().size;
     for (const Eigen::Vector2d& blob : findMarkBlobs(points, size, config_.landmarks)) {
       for (const Mark& mark : map_.field().marks) {
-        append(landmarkCandidates(blob, mark.center, headings, HypothesisSource::kMark, 1.0));
+        for (auto& h : landmarkCandidates(blob, mark.center, headings, HypothesisSource::kMark, 1.0)) {
+          out.push_back(h);
+        }
       }
     }
+  }
+  return out;
+}
+
+std::vector<OrientationCandidate> GlobalHoughLocalizer::scanHeadings(
+    const Eigen::Vector2d& p_robot, const Eigen::Vector2d& p_field,
+    const WeightedPoints& points) const {
+  // Rotations about the landmark: p_field = R(theta) p_robot + t keeps the landmark in place.
+  const int n = std::max(
+      8, static_cast<int>(std::lround(2.0 * M_PI / config_.landmarks.heading_scan_step_rad)));
+  std::vector<double> score(n);
+  for (int k = 0; k < n; ++k) {
+    const double theta = 2.0 * M_PI * k / n;
+    const Eigen::Vector2d t = p_field - Eigen::Rotation2Dd(theta) * p_robot;
+    score[k] = scorePose(points, Pose2(t.x(), t.y(), theta), map_.grid(), config_.scoring).score;
+  }
+  std::vector<OrientationCandidate> maxima;
+  for (int k = 0; k < n; ++k) {
+    const double prev = score[(k + n - 1) % n], next = score[(k + 1) % n];
+    if (score[k] > prev && score[k] >= next) {
+      maxima.push_back({normalizeAngle(2.0 * M_PI * k / n), score[k]});
+    }
+  }
+  std::sort(maxima.begin(), maxima.end(),
+            [](const auto& a, const auto& b) { return a.correlation > b.correlation; });
+  if (static_cast<int>(maxima.size()) > config_.landmarks.heading_scan_maxima) {
+    maxima.resize(config_.landmarks.heading_scan_maxima);
+  }
+  return maxima;
+}
+
+std::vector<PoseHypothesis> GlobalHoughLocalizer::convergeCandidates(
+    std::vector<PoseHypothesis> candidates, const WeightedPoints& few) const {
+  // Gauss-Newton on the subsample first: candidates from different Hough peaks often converge
+  // to the same optimum, and only distinct optima need the full refinement.
+  RefinementConfig coarse = config_.refinement;
+  coarse.max_distance_m *= 1.5;
+  for (PoseHypothesis& c : candidates) {
+    const Eigen::Vector2d frozen =
+        c.kind == HypothesisKind::kParallel ? c.line_direction : Eigen::Vector2d::Zero();
+    c.field_T_robot = refinePose(few, c.field_T_robot, map_.features(), coarse, frozen).field_T_robot;
+    c.score = scorePose(few, c.field_T_robot, map_.grid(), config_.scoring).score;
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& a, const auto& b) { return a.score > b.score; });
+  std::vector<PoseHypothesis> out;
+  for (const PoseHypothesis& c : candidates) {
+    bool same = false;
+    for (const PoseHypothesis& k : out) {
+      same |= k.kind == c.kind &&
+              (k.field_T_robot.translation() - c.field_T_robot.translation()).norm() <
+                  kConvergedM &&
+              std::abs(angleDifference(k.field_T_robot.theta, c.field_T_robot.theta)) <
+                  kConvergedRad;
+    }
+    if (!same) out.push_back(c);
   }
   return out;
 }

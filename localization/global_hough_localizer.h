@@ -59,6 +59,15 @@ class GlobalHoughLocalizer {
   void finish(PoseHypothesis& candidate, const WeightedPoints& points,
               const VisibilityEvidence& evidence) const;
   bool onCarpet(const Pose2& pose) const;
+  /// Coarse Gauss-Newton of every pruned candidate on the subsample `few`; keeps one of each
+  /// group that converged to the same pose, best subsample score first.
+  std::vector<PoseHypothesis> convergeCandidates(std::vector<PoseHypothesis> candidates,
+                                                 const WeightedPoints& few) const;
+  /// Headings (best local maxima of the score) for rotations of the view about a landmark seen
+  /// at p_robot and mapped to p_field.
+  std::vector<OrientationCandidate> scanHeadings(const Eigen::Vector2d& p_robot,
+                                                 const Eigen::Vector2d& p_field,
+                                                 const WeightedPoints& points) const;
 
   GlobalHoughConfig config_;
   MapSignature map_;

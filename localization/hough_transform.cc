@@ -47,9 +47,20 @@ HoughTransform::HoughTransform(const HoughConfig& config, double rho_max_m) : co
 void HoughTransform::addPoint(const Eigen::Vector2d& p, double weight) {
   if (!p.allFinite() || !std::isfinite(weight) || cells_.empty()) return;
   const double inv_step = 1.0 / config_.rho_step_m;
-  for (int i = 0; i < num_theta_; ++i) {
-    const double rho = p.x() * cos_[i] + p.y() * sin_[i];
-    vote(&cells_[index(i, 0)], num_rho_, rho * inv_step + centre_row_, weight);
+  const double x = p.x() * inv_step, y = p.y() * inv_step;
+  const double last = num_rho_ - 1.0;
+  const float w = static_cast<float>(weight);
+  float* column = cells_.data();
+  for (int i = 0; i < num_theta_; ++i, column += num_rho_) {
+    const double r = x * cos_[i] + y * sin_[i] + centre_row_;
+    if (r >= 0.0 && r < last) {  // the usual case: both rows inside, no floor needed
+      const int j = static_cast<int>(r);
+      const float f = static_cast<float>(r - j);
+      column[j] += w - w * f;
+      column[j + 1] += w * f;
+    } else {
+      vote(column, num_rho_, r, weight);
+    }
   }
 }
 

@@ -12,13 +12,13 @@ bool sameHypothesis(const PoseHypothesis& a, const PoseHypothesis& b,
     return false;
   }
   const Eigen::Vector2d d = a.field_T_robot.translation() - b.field_T_robot.translation();
-  const PoseHypothesis* line = a.kind == HypothesisKind::kParallel   ? &a
-                               : b.kind == HypothesisKind::kParallel ? &b
-                                                                     : nullptr;
   if (a.kind == HypothesisKind::kHeadingOnly || b.kind == HypothesisKind::kHeadingOnly) {
     return a.kind == b.kind;
   }
-  if (line != nullptr) {
+  // Two 1-D hypotheses on the same line are one. A full pose on a 1-D hypothesis' line is not
+  // its duplicate: it says where along the line, which the wide 1-D Gaussian does not.
+  if (a.kind == HypothesisKind::kParallel && b.kind == HypothesisKind::kParallel) {
+    const PoseHypothesis* line = &a;
     // Same line, and along it within the larger of the two along-line std devs.
     const Eigen::Vector2d& u = line->line_direction;
     const double along_sigma = std::sqrt(std::max(u.dot(a.covariance.topLeftCorner<2, 2>() * u),

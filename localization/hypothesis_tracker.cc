@@ -43,6 +43,8 @@ void HypothesisTracker::predict(std::int64_t t_us, const std::optional<Pose2>& o
   jump_since_injection_ = jump_since_injection_ || step.jump;
   seconds_since_injection_ += step.dt_s;
   stats_.seconds_without_points += step.dt_s;
+  blind_since_injection_ =
+      blind_since_injection_ || stats_.seconds_without_points > config_.lost_without_points_s;
   for (TrackedHypothesis& h : hypotheses_) {
     if (step.has_motion) predictWithMotion(step.motion, step.dt_s, config_.motion, &h.pose);
     if (step.unknown_s > 0.0) inflateUnknownMotion(step.unknown_s, config_.motion, &h.pose);
@@ -71,12 +73,16 @@ void HypothesisTracker::correct(const GroundPoints& points) {
       const bool disagrees = r.inlier_share < config_.disagree_inlier_share;
       h.disagreeing_frames = disagrees ? h.disagreeing_frames + 1 : 0;
     }
-    log_likelihood[k] = config_.likelihood_points * r.mean_log_likelihood;
+    log_likelihood[k] = r.mean_log_likelihood;
   }
-  // Bayes: weight *= frame likelihood; relative to the best, so exp() cannot overflow.
+  // Bayes: weight *= frame likelihood; relative to the best, so exp() cannot overflow. Mean
+  // per-point differences within the deadband are not evidence: two poses that both explain the
+  // lines differ by that much only through where the outliers happen to fall (more lines nearby,
+  // more outliers close to one), and summed over frames that bias would pick the busier place.
   const double best = *std::max_element(log_likelihood.begin(), log_likelihood.end());
   for (size_t k = 0; k < hypotheses_.size(); ++k) {
-    const double ratio = std::exp(std::max(log_likelihood[k] - best, -700.0));
+    const double difference = std::min(0.0, log_likelihood[k] - best + config_.likelihood_deadband);
+    const double ratio = std::exp(std::max(config_.likelihood_points * difference, -700.0));
     hypotheses_[k].pose.weight *= std::isfinite(ratio) ? ratio : 0.0;
   }
   finishSet();
@@ -99,13 +105,17 @@ void HypothesisTracker::injectHypotheses(const std::vector<GaussianPose>& poses)
       }
     }
   }
-  addPoses(weighted, config_.injected_share);
+  // Asked only because the period passed: the best hypothesis agrees with the observations, so
+  // a kidnap is unlikely and newcomers start small; a local view (one corner) fits several
+  // places, and only history tells them apart.
+  addPoses(weighted, onlyPeriodic() ? config_.periodic_injected_share : config_.injected_share);
   markInjected();
 }
 
 void HypothesisTracker::markInjected() {
   seconds_since_injection_ = 0.0;
   jump_since_injection_ = false;
+  blind_since_injection_ = false;
   // Fresh hypotheses get a fresh chance: old disagreement counts no longer ask for more.
   for (TrackedHypothesis& h : hypotheses_) h.disagreeing_frames = 0;
 }
@@ -149,10 +159,13 @@ bool HypothesisTracker::bestIsLost() const {
          !(var_xy <= config_.lost_sigma_m * config_.lost_sigma_m);
 }
 
+bool HypothesisTracker::onlyPeriodic() const {
+  return !hypotheses_.empty() && !jump_since_injection_ && !blind_since_injection_ &&
+         !bestIsLost() && hypotheses_.front().pose.weight >= config_.low_best_weight;
+}
+
 bool HypothesisTracker::needsGlobalHypotheses() const {
-  if (hypotheses_.empty() || jump_since_injection_ || bestIsLost()) return true;
-  if (hypotheses_.front().pose.weight < config_.low_best_weight) return true;
-  return seconds_since_injection_ >= config_.periodic_global_s;
+  return !onlyPeriodic() || seconds_since_injection_ >= config_.periodic_global_s;
 }
 
 bool HypothesisTracker::topHypothesesMirrorAmbiguous() const {
@@ -171,7 +184,9 @@ bool HypothesisTracker::topHypothesesMirrorAmbiguous() const {
 
 TrackerStatus HypothesisTracker::status() const {
   if (hypotheses_.empty()) return TrackerStatus::kInitializing;
-  if (bestIsLost()) return TrackerStatus::kLost;
+  if (bestIsLost() || stats_.seconds_without_points > config_.lost_without_points_s) {
+    return TrackerStatus::kLost;
+  }
   if (topHypothesesMirrorAmbiguous()) return TrackerStatus::kAmbiguous;
   return TrackerStatus::kTracking;
 }

@@ -69,6 +69,8 @@ class HypothesisTracker {
   void addPoses(const std::vector<GaussianPose>& poses, double share);
   void markInjected();
   bool bestIsLost() const;
+  /// Nothing but the period would ask for global hypotheses now.
+  bool onlyPeriodic() const;
   void finishSet();
 
   TrackerConfig config_;
@@ -79,6 +81,7 @@ class HypothesisTracker {
   int next_id_ = 0;
   double seconds_since_injection_ = 0.0;
   bool jump_since_injection_ = false;
+  bool blind_since_injection_ = false;  ///< no points for lost_without_points_s meanwhile
 };
 
 }  // namespace houghloc

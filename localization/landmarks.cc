@@ -8,6 +8,8 @@
 namespace houghloc {
 namespace {
 
+constexpr std::size_t kMaxVotingPoints = 150;  // points voting for the circle centre
+
 /// Coverage of angles around a centre: 2 pi minus the largest gap between sorted angles.
 double angularCoverage(std::vector<double> angles) {
   if (angles.size() < 2) return 0.0;
@@ -37,15 +39,19 @@ std::optional<CircleObservation> fitCircle(const WeightedPoints& points, double 
   const int steps = std::max(16, static_cast<int>(std::ceil(2.0 * M_PI * radius / cell)));
   std::vector<Eigen::Vector2d> ring(steps);
   for (int k = 0; k < steps; ++k) {
-    ring[k] =
-        radius * Eigen::Vector2d(std::cos(2 * M_PI * k / steps), std::sin(2 * M_PI * k / steps));
+    ring[k] = (radius / cell) *
+              Eigen::Vector2d(std::cos(2 * M_PI * k / steps), std::sin(2 * M_PI * k / steps));
   }
+  // The vote only needs to land in the right cell: an even subsample of the points is enough
+  // (Gauss-Newton below uses all of them).
+  const std::size_t stride = std::max<std::size_t>(1, points.size() / kMaxVotingPoints);
   int best = -1;
-  for (std::size_t i = 0; i < points.size(); ++i) {
+  for (std::size_t i = 0; i < points.size(); i += stride) {
+    const Eigen::Vector2d p = (points.points[i] - lo) / cell;
+    const float w = static_cast<float>(points.weights[i]);
     for (const auto& r : ring) {
-      const Eigen::Vector2d c = (points.points[i] + r - lo) / cell;
-      const int idx = static_cast<int>(c.y()) * cols + static_cast<int>(c.x());
-      votes[idx] += static_cast<float>(points.weights[i]);
+      const int idx = static_cast<int>(p.y() + r.y()) * cols + static_cast<int>(p.x() + r.x());
+      votes[idx] += w;
       if (best < 0 || votes[idx] > votes[best]) best = idx;
     }
   }

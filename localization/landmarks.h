@@ -15,7 +15,12 @@ struct LandmarkConfig {
   double circle_cell_m = 0.05;       ///< cell of the circle-centre vote accumulator
   double circle_band_m = 0.06;       ///< points this close to the circle are its inliers
   double circle_min_support = 10.0;  ///< point weight on the circle
-  double circle_min_arc_rad = 1.6;   ///< angular coverage of the inliers around the centre
+  double circle_min_arc_rad = 1.0;   ///< angular coverage of the inliers around the centre
+  /// A landmark fixes the position up to a rotation about it; besides the step-2 headings, the
+  /// heading is scanned at this step (rad) scoring all points (the halfway line through the
+  /// circle, the lines next to a mark) ...
+  double heading_scan_step_rad = 2.0 * M_PI / 180.0;
+  int heading_scan_maxima = 4;  ///< ... and this many best local maxima become candidates
   double mark_link_m = 0.05;         ///< extra extent allowed around a mark for noise
   double mark_isolation_m = 0.35;    ///< no other point this close to a mark blob
   int mark_min_points = 3;

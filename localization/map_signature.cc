@@ -110,10 +110,31 @@ MapSignature::MapSignature(const FieldModel& field, const MapSignatureConfig& co
   grid_ = DistanceGrid(field, config.grid);
   features_ = FeatureLookup(field, config.lookup_resolution_m, config.grid.margin_m);
   const WeightedPoints evidence = sampleMapLines(field, config.evidence_spacing_m, false);
-  evidence_ = evidence.points;
+  bucketEvidence(evidence.points);
   for (const Arc2& a : field.arcs) {
     if (a.isFullCircle()) circles_.push_back(a);
   }
+}
+
+void MapSignature::bucketEvidence(const std::vector<Eigen::Vector2d>& samples) {
+  // Row-major buckets; a row's buckets are contiguous, so a box query visits one range per row.
+  const double b = kEvidenceBucketM;
+  bucket_origin_ = Eigen::Vector2d(-field_.outerHalfLength() - b, -field_.outerHalfWidth() - b);
+  bucket_cols_ = static_cast<int>(std::ceil(2.0 * (field_.outerHalfLength() + b) / b)) + 1;
+  bucket_rows_ = static_cast<int>(std::ceil(2.0 * (field_.outerHalfWidth() + b) / b)) + 1;
+  auto bucket = [&](const Eigen::Vector2d& p) {
+    const int c = std::clamp(static_cast<int>((p.x() - bucket_origin_.x()) / b), 0,
+                             bucket_cols_ - 1);
+    const int r = std::clamp(static_cast<int>((p.y() - bucket_origin_.y()) / b), 0,
+                             bucket_rows_ - 1);
+    return r * bucket_cols_ + c;
+  };
+  bucket_start_.assign(static_cast<std::size_t>(bucket_cols_) * bucket_rows_ + 1, 0);
+  for (const auto& p : samples) ++bucket_start_[bucket(p) + 1];
+  for (std::size_t i = 1; i < bucket_start_.size(); ++i) bucket_start_[i] += bucket_start_[i - 1];
+  evidence_.resize(samples.size());
+  std::vector<int> fill(bucket_start_.begin(), bucket_start_.end() - 1);
+  for (const auto& p : samples) evidence_[fill[bucket(p)]++] = p;
 }
 
 }  // namespace houghloc

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <vector>
 
 #include "field_models/distance_grid.h"
@@ -43,12 +44,32 @@ class MapSignature {
 
   const DistanceGrid& grid() const { return grid_; }
   const FeatureLookup& features() const { return features_; }
-  /// Points every evidence_spacing_m along all lines and arcs, field frame (negative evidence).
+  /// Points every evidence_spacing_m along all lines and arcs, field frame (negative evidence),
+  /// ordered by square buckets of kEvidenceBucketM so that a region is cheap to visit.
   const std::vector<Eigen::Vector2d>& evidenceSamples() const { return evidence_; }
+  /// Calls f(p_field) for every evidence sample in the buckets overlapping the box [lo, hi]
+  /// (a superset of the samples inside it).
+  template <typename F>
+  void forEachEvidenceSample(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, F&& f) const {
+    const int c0 = std::max(0, static_cast<int>((lo.x() - bucket_origin_.x()) / kEvidenceBucketM));
+    const int r0 = std::max(0, static_cast<int>((lo.y() - bucket_origin_.y()) / kEvidenceBucketM));
+    const int c1 = std::min(bucket_cols_ - 1,
+                            static_cast<int>((hi.x() - bucket_origin_.x()) / kEvidenceBucketM));
+    const int r1 = std::min(bucket_rows_ - 1,
+                            static_cast<int>((hi.y() - bucket_origin_.y()) / kEvidenceBucketM));
+    for (int r = r0; r <= r1; ++r) {
+      const int begin = bucket_start_[r * bucket_cols_ + c0];
+      const int end = bucket_start_[r * bucket_cols_ + c1 + 1];
+      for (int i = begin; i < end; ++i) f(evidence_[i]);
+    }
+  }
+  static constexpr double kEvidenceBucketM = 1.0;  ///< bucket size of the evidence samples
   /// Full circles of the map (the centre circle), for the circle step.
   const std::vector<Arc2>& circles() const { return circles_; }
 
  private:
+  void bucketEvidence(const std::vector<Eigen::Vector2d>& samples);
+
   FieldModel field_;
   MapSignatureConfig config_;
   double rho_max_ = 0.0;
@@ -59,6 +80,9 @@ class MapSignature {
   DistanceGrid grid_;
   FeatureLookup features_;
   std::vector<Eigen::Vector2d> evidence_;
+  Eigen::Vector2d bucket_origin_ = Eigen::Vector2d::Zero();
+  int bucket_cols_ = 0, bucket_rows_ = 0;
+  std::vector<int> bucket_start_;  ///< CSR offsets into evidence_, row-major, one extra at the end
   std::vector<Arc2> circles_;
 };
 

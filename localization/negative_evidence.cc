@@ -113,24 +113,31 @@ void VisibilityEvidence::rasterise(const std::vector<GroundPolygon>& polygons) {
   }
 }
 
-int VisibilityEvidence::cell(double x, double y) const {
-  const int c = static_cast<int>(std::floor((x - origin_.x()) / config_.raster_m));
-  const int r = static_cast<int>(std::floor((y - origin_.y()) / config_.raster_m));
-  if (c < 0 || r < 0 || c >= cols_ || r >= rows_) return -1;
-  return r * cols_ + c;
-}
-
 double VisibilityEvidence::unseenLineLength(const Pose2& field_T_robot,
                                             const MapSignature& map) const {
   if (empty_) return 0.0;
+  // Only the map samples near the raster can fall into it: its corners in the field frame
+  // bound the buckets to visit.
+  const double c_f = std::cos(field_T_robot.theta), s_f = std::sin(field_T_robot.theta);
+  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (int k = 0; k < 4; ++k) {
+    const double x = origin_.x() + (k & 1 ? cols_ : 0) * config_.raster_m;
+    const double y = origin_.y() + (k & 2 ? rows_ : 0) * config_.raster_m;
+    const Eigen::Vector2d q(c_f * x - s_f * y + field_T_robot.x, s_f * x + c_f * y + field_T_robot.y);
+    lo = lo.cwiseMin(q);
+    hi = hi.cwiseMax(q);
+  }
   const Pose2 robot_T_field = field_T_robot.inverse();
   const double c = std::cos(robot_T_field.theta), s = std::sin(robot_T_field.theta);
+  const double inv = 1.0 / config_.raster_m;
   int unseen = 0;
-  for (const auto& p : map.evidenceSamples()) {
-    const int k =
-        cell(c * p.x() - s * p.y() + robot_T_field.x, s * p.x() + c * p.y() + robot_T_field.y);
-    if (k >= 0 && (cells_[k] & 6) == 2) ++unseen;  // inside with margin, no point near
-  }
+  map.forEachEvidenceSample(lo, hi, [&](const Eigen::Vector2d& p) {
+    const double gx = (c * p.x() - s * p.y() + robot_T_field.x - origin_.x()) * inv;
+    const double gy = (s * p.x() + c * p.y() + robot_T_field.y - origin_.y()) * inv;
+    if (gx < 0.0 || gy < 0.0 || gx >= cols_ || gy >= rows_) return;
+    const unsigned char v = cells_[static_cast<int>(gy) * cols_ + static_cast<int>(gx)];
+    unseen += (v & 6) == 2;  // inside with margin, no point near
+  });
   return unseen * map.config().evidence_spacing_m;
 }
 

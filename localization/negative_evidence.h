@@ -42,8 +42,6 @@ class VisibilityEvidence {
 
  private:
   void rasterise(const std::vector<GroundPolygon>& polygons);
-  /// Cell index of p_robot in the raster, -1 outside it.
-  int cell(double x, double y) const;
 
   NegativeEvidenceConfig config_;
   bool empty_ = true;

@@ -20,7 +20,14 @@ MotionStep OdometryInput::step(std::int64_t t_us, const std::optional<Pose2>& od
   if (!valid) {
     // Within the timeout the next valid reading will carry the motion; after it, nobody knows.
     const double since = 1e-6 * static_cast<double>(t_us - last_odometry_t_us_);
-    if (!has_odometry_ || since > config_.timeout_s) out.unknown_s = out.dt_s;
+    if (!has_odometry_) {
+      out.unknown_s = out.dt_s;
+    } else if (since > config_.timeout_s) {
+      // The frame that crosses the timeout inflates for the whole time since the last reading:
+      // the next reading will only re-anchor, so nothing else accounts for it.
+      out.unknown_s =
+          since - out.dt_s <= config_.timeout_s ? std::min(since, config_.max_dt_s) : out.dt_s;
+    }
     return out;
   }
   if (!has_odometry_) {
@@ -36,11 +43,18 @@ MotionStep OdometryInput::step(std::int64_t t_us, const std::optional<Pose2>& od
   const double max_rot = config_.max_turn_rad_per_s * dt_odom + config_.jump_slack_rad;
   last_odometry_ = *odometry;
   last_odometry_t_us_ = t_us;
-  if (!motion.isFinite() || std::hypot(motion.x, motion.y) > max_trans ||
-      std::abs(motion.theta) > max_rot) {
+  const bool implausible = !motion.isFinite() || std::hypot(motion.x, motion.y) > max_trans ||
+                           std::abs(motion.theta) > max_rot;
+  if (implausible) {
     // A reset of the odometry source or a glitch: the true motion is unknown, not huge.
     out.jump = true;
     out.unknown_s = std::max(dt_odom, out.dt_s);
+    return out;
+  }
+  if (dt_odom > config_.timeout_s) {
+    // The frames since the timeout were already inflated as unknown motion; the reading after
+    // such a gap (say a fall, whose odometry is garbage) only re-anchors the odometry frame.
+    out.unknown_s = out.dt_s;
     return out;
   }
   out.motion = motion;

@@ -13,7 +13,10 @@ struct OdometryInputConfig {
   double max_turn_rad_per_s = 5.0;  ///< faster apparent turning is a jump
   double jump_slack_m = 0.05;       ///< allowed on top of max speed * dt, m
   double jump_slack_rad = 0.2;      ///< allowed on top of max turn * dt, rad
-  double timeout_s = 0.3;  ///< without valid odometry for longer, the motion counts as unknown
+  /// Without valid odometry for longer, the motion counts as unknown (and the next reading only
+  /// re-anchors). Shorter gaps are bridged by the next reading, but the frames in between are
+  /// corrected at the old pose with the old covariance, so keep it to a few frames.
+  double timeout_s = 0.15;
   double max_dt_s = 60.0;  ///< longer gaps (clock glitches) are treated as this long, s
 };
 

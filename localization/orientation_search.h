@@ -5,8 +5,8 @@
 namespace houghloc {
 
 struct OrientationConfig {
-  double min_correlation = 0.2;   ///< candidates need c(phi) above this (profiles unit norm)
-  double relative_share = 0.4;    ///< ... and above this share of the best c(phi)
+  double min_correlation = 0.05;  ///< candidates need c(phi) above this (profiles unit norm)
+  double relative_share = 0.25;   ///< ... and above this share of the best c(phi)
   int max_candidates = 3;         ///< maxima kept in [0, pi); each also yields its pi twin
   double suppression_rad = 0.07;  ///< non-maximum suppression window around a kept maximum
 };

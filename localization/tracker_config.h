@@ -19,8 +19,13 @@ struct TrackerConfig {
   /// Frame likelihood = exp(likelihood_points * mean per-point log-likelihood): the frame counts
   /// as this many independent points when hypotheses are compared. Lower = slower decisions.
   double likelihood_points = 8.0;
+  /// Differences of the mean per-point log-likelihood below this are ignored when hypotheses are
+  /// compared (outliers near lines favour places with many lines by a few hundredths).
+  double likelihood_deadband = 0.1;
   /// Weight share of the set given to newly injected global hypotheses (the rest stays).
   double injected_share = 0.2;
+  /// Same for the low-rate injections while the best hypothesis agrees with the observations.
+  double periodic_injected_share = 0.02;
   /// Weight share given to poses added by an ADD hint.
   double hint_add_share = 0.5;
 
@@ -31,6 +36,9 @@ struct TrackerConfig {
   double low_best_weight = 0.25;       ///< best normalised weight below this: ask
   double lost_sigma_m = 0.5;           ///< best position std above this: LOST, ask
   double periodic_global_s = 3.0;      ///< otherwise ask at this period, s
+  /// No points for longer than this: the estimate is dead reckoning only, status LOST; the first
+  /// frame with points again asks for global hypotheses, s.
+  double lost_without_points_s = 5.0;
 
   // Symmetry and hints.
   double mirror_tolerance_m = 0.3;      ///< a hypothesis this close to another's mirror, m

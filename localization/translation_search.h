@@ -10,7 +10,7 @@ namespace houghloc {
 struct TranslationConfig {
   double min_line_weight = 4.0;  ///< a constraint needs this much point weight on map lines
   double relative_share = 0.2;   ///< ... and this share of the direction's strongest shift
-  int max_peaks = 8;             ///< shifts kept per direction, strongest first
+  int max_peaks = 12;            ///< shifts kept per direction, strongest first
   double suppression_m = 0.12;   ///< non-maximum suppression window of the shift d
 };
 

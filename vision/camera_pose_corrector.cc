@@ -3,10 +3,11 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 namespace houghloc {
 namespace {
+
+constexpr double kQuarterTurn = 0.5 * 3.14159265358979323846;
 
 Pose3 withCorrection(Pose3 pose, const Eigen::Vector2d& correction) {
   pose.roll += correction.x();
@@ -14,27 +15,9 @@ Pose3 withCorrection(Pose3 pose, const Eigen::Vector2d& correction) {
   return pose;
 }
 
-/// Ground direction (rad) of each segment under a camera pose; NaN when an end leaves the ground.
-std::vector<double> directions(const std::vector<const GroundSegment*>& segments,
-                               const Pose3& pose) {
-  GroundProjectionConfig unlimited;
-  unlimited.max_range_m = 1e9;
-  unlimited.min_depression_rad = 0.0;
-  std::vector<double> angles;
-  for (const GroundSegment* s : segments) {
-    const auto a = rayToGround(s->ray_a_camera, pose, unlimited);
-    const auto b = rayToGround(s->ray_b_camera, pose, unlimited);
-    angles.push_back(a && b ? std::atan2(b->y() - a->y(), b->x() - a->x()) : std::nan(""));
-  }
-  return angles;
-}
-
-/// Deviation (rad) of two undirected segment directions from parallel or perpendicular, whichever
-/// is nearer: the difference wrapped into [-pi/4, pi/4).
-double pairResidual(double angle_a, double angle_b) {
-  constexpr double kQuarter = 0.25 * 3.14159265358979323846;
-  const double d = angle_a - angle_b;
-  return d - 2.0 * kQuarter * std::floor((d + kQuarter) / (2.0 * kQuarter));
+/// Angle wrapped into [-pi/4, pi/4): the deviation from the nearest field direction.
+double wrapQuarter(double angle) {
+  return angle - kQuarterTurn * std::floor((angle + 0.5 * kQuarterTurn) / kQuarterTurn);
 }
 
 }  // namespace
@@ -52,7 +35,47 @@ Pose3 CameraPoseCorrector::corrected(const Pose3& recorded) const {
 
 void CameraPoseCorrector::reset() {
   estimate_.setZero();
-  information_.setZero();
+  frames_.clear();
+}
+
+Eigen::VectorXd CameraPoseCorrector::residuals(const Eigen::Vector2d& c,
+                                               std::vector<double>* weights) const {
+  GroundProjectionConfig unlimited;
+  unlimited.max_range_m = 1e9;
+  unlimited.min_depression_rad = 0.0;
+  const bool compute_weights = weights->empty();
+  std::vector<double> out;
+  std::vector<double> angles;
+  size_t index = 0;
+  for (const Frame& frame : frames_) {
+    const Pose3 pose = withCorrection(frame.recorded, c);
+    angles.clear();
+    double cos_sum = 0.0, sin_sum = 0.0;
+    for (const Observation& o : frame.observations) {
+      const auto a = rayToGround(o.ray_a, pose, unlimited);
+      const auto b = rayToGround(o.ray_b, pose, unlimited);
+      const double angle = a && b ? std::atan2(b->y() - a->y(), b->x() - a->x()) : std::nan("");
+      angles.push_back(angle);
+      if (!std::isfinite(angle)) continue;
+      // Field directions repeat every 90 deg: average 4 x angle on the circle.
+      const double w = 1.0 / (o.sigma_rad * o.sigma_rad);
+      cos_sum += w * std::cos(4.0 * angle);
+      sin_sum += w * std::sin(4.0 * angle);
+    }
+    const double heading = 0.25 * std::atan2(sin_sum, cos_sum);
+    for (size_t i = 0; i < angles.size(); ++i, ++index) {
+      const double r = wrapQuarter(angles[i] - heading);
+      const double whitened = std::isfinite(r) ? r / frame.observations[i].sigma_rad : 0.0;
+      if (compute_weights) {
+        const double k = config_.huber_sigmas;
+        const bool gated = !std::isfinite(r) || std::abs(r) > config_.max_residual_rad;
+        weights->push_back(
+            gated ? 0.0 : (std::abs(whitened) <= k ? 1.0 : std::sqrt(k / std::abs(whitened))));
+      }
+      out.push_back((*weights)[index] * whitened);
+    }
+  }
+  return Eigen::Map<const Eigen::VectorXd>(out.data(), static_cast<long>(out.size()));
 }
 
 bool CameraPoseCorrector::update(const std::vector<GroundSegment>& segments,
@@ -64,69 +87,44 @@ bool CameraPoseCorrector::update(const std::vector<GroundSegment>& segments,
       used.push_back(&s);
     }
   }
-  if (used.size() < 2) return false;
-  // Pairs that are field-line pairs under the current estimate.
-  const std::vector<double> start = directions(used, withCorrection(recorded, estimate_));
-  std::vector<std::pair<size_t, size_t>> pairs;
-  std::vector<double> weights;
-  const double max_residual = config_.max_pair_angle_rad;
-  for (size_t i = 0; i < used.size(); ++i) {
-    for (size_t j = i + 1; j < used.size(); ++j) {
-      if (!std::isfinite(start[i]) || !std::isfinite(start[j])) continue;
-      if (std::abs(pairResidual(start[i], start[j])) > max_residual) continue;
-      pairs.emplace_back(i, j);
-      weights.push_back(1.0 / std::hypot(directionSigma(*used[i]), directionSigma(*used[j])));
+  std::sort(used.begin(), used.end(), [](const GroundSegment* a, const GroundSegment* b) {
+    return a->length() > b->length();
+  });
+  used.resize(
+      std::min(used.size(), static_cast<size_t>(std::max(0, config_.max_segments_per_frame))));
+  // A frame with one direction and one segment says nothing (its heading absorbs it).
+  if (used.size() >= 2) {
+    Frame frame{recorded, {}};
+    for (const GroundSegment* s : used) {
+      frame.observations.push_back({s->ray_a_camera, s->ray_b_camera, directionSigma(*s)});
     }
+    frames_.push_back(std::move(frame));
   }
-  if (pairs.empty()) return false;
+  while (static_cast<int>(frames_.size()) > std::max(1, config_.window_frames)) frames_.pop_front();
+  if (frames_.empty()) return false;
 
-  const Eigen::Matrix2d prior =
-      config_.forgetting * information_ +
-      Eigen::Matrix2d::Identity() / (config_.step_sigma_rad * config_.step_sigma_rad);
-  const auto residuals = [&](const Eigen::Vector2d& c) {
-    const std::vector<double> angles = directions(used, withCorrection(recorded, c));
-    Eigen::VectorXd r(static_cast<long>(pairs.size()));
-    for (size_t k = 0; k < pairs.size(); ++k) {
-      const double res = pairResidual(angles[pairs[k].first], angles[pairs[k].second]);
-      r(static_cast<long>(k)) = std::isfinite(res) ? weights[k] * res : 0.0;
-    }
-    return r;
-  };
-  // Huber weights from the residuals at the start of each Gauss-Newton step (IRLS).
-  const auto robust = [&](const Eigen::VectorXd& r_unweighted) {
-    Eigen::VectorXd w(r_unweighted.size());
-    for (long k = 0; k < w.size(); ++k) {
-      const double angle = std::abs(r_unweighted(k)) / weights[static_cast<size_t>(k)];
-      w(k) = angle <= config_.huber_rad ? 1.0 : std::sqrt(config_.huber_rad / angle);
-    }
-    return w;
-  };
+  // Gauss-Newton with IRLS weights fixed per step; the prior keeps unobserved directions at 0.
+  const double prior = 1.0 / (config_.prior_sigma_rad * config_.prior_sigma_rad);
   Eigen::Vector2d c = estimate_;
-  Eigen::Matrix2d jtj = Eigen::Matrix2d::Zero();
   for (int it = 0; it < config_.iterations; ++it) {
-    const Eigen::VectorXd raw = residuals(c);
-    const Eigen::VectorXd w = robust(raw);
-    const Eigen::VectorXd r0 = w.cwiseProduct(raw);
-    Eigen::MatrixXd jac(r0.size(), 2);
-    constexpr double kStep = 1e-4;
+    std::vector<double> weights;
+    const Eigen::VectorXd r0 = residuals(c, &weights);
+    Eigen::MatrixXd jacobian(r0.size(), 2);
+    constexpr double kStep = 1e-5;
     for (int k = 0; k < 2; ++k) {
       Eigen::Vector2d dc = Eigen::Vector2d::Zero();
       dc(k) = kStep;
-      jac.col(k) = w.cwiseProduct(residuals(c + dc) - raw) / kStep;
+      jacobian.col(k) = (residuals(c + dc, &weights) - r0) / kStep;
     }
-    jtj = jac.transpose() * jac;
-    const Eigen::Matrix2d h = jtj + prior;
-    const Eigen::Vector2d g = jac.transpose() * r0 + prior * (c - estimate_);
+    const Eigen::Matrix2d h = jacobian.transpose() * jacobian + prior * Eigen::Matrix2d::Identity();
+    const Eigen::Vector2d g = jacobian.transpose() * r0 + prior * c;
     const Eigen::Vector2d step = -h.ldlt().solve(g);
     if (!step.allFinite()) return false;
     c += step;
-    if (step.norm() < 1e-6) break;
+    if (step.norm() < 1e-7) break;
   }
   const double limit = config_.max_correction_rad;
   estimate_ = c.cwiseMax(-limit).cwiseMin(limit);
-  information_ = config_.forgetting * information_ + jtj;
-  const double scale = information_.trace() / config_.max_information;
-  if (scale > 1.0) information_ /= scale;
   return true;
 }
 

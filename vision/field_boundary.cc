@@ -67,31 +67,48 @@ bool dropSpikes(const std::vector<Eigen::Vector2f>& hull, std::vector<Eigen::Vec
 
 /// Rows at the image bottom without turf (the robot's feet), per sampled column, spread to every
 /// column with the smaller (higher) value of the two neighbouring samples: conservative at the
-/// body's edges.
+/// body's edges. A field line running into the feet joins their non-turf run along the bottom
+/// row but reaches much higher: each run's columns are capped at its median height (plus a
+/// margin), so the line above the feet is still scanned.
 std::vector<float> bodyRows(const cv::Mat& bgr, const FieldColor& color,
                             const FieldBoundaryConfig& config) {
   const int step = std::max(1, config.column_step_px);
-  // Columns inside wide non-turf runs of the bottom row.
-  std::vector<bool> wide(static_cast<size_t>(bgr.cols), false);
+  // Per column the id of the wide non-turf run of the bottom row it lies in (-1: none).
+  std::vector<int> run_of(static_cast<size_t>(bgr.cols), -1);
   const uchar* bottom = bgr.ptr<uchar>(bgr.rows - 1);
   const int min_width = static_cast<int>(config.min_body_width_share * bgr.cols);
+  int runs = 0;
   for (int u = 0; u < bgr.cols;) {
     const int begin = u;
     while (u < bgr.cols && !color.isField(bottom + 3 * u)) ++u;
     if (u - begin >= std::max(1, min_width))
-      std::fill(wide.begin() + begin, wide.begin() + u, true);
+      std::fill(run_of.begin() + begin, run_of.begin() + u, runs++);
     if (u == begin) ++u;
   }
-  std::vector<float> sampled;
+  std::vector<int> extents, sample_run;
+  std::vector<std::vector<int>> run_extents(static_cast<size_t>(runs));
   for (int u = 0; u < bgr.cols; u += step) {
-    if (!wide[static_cast<size_t>(u)]) {
-      sampled.push_back(static_cast<float>(bgr.rows));
-      continue;
+    const int run = run_of[static_cast<size_t>(u)];
+    int extent = 0;
+    if (run >= 0) {
+      int v = bgr.rows - 1;
+      while (v >= 0 && !color.isField(bgr.ptr<uchar>(v) + 3 * u)) --v;
+      extent = bgr.rows - 1 - v;
+      run_extents[static_cast<size_t>(run)].push_back(extent);
     }
-    int v = bgr.rows - 1;
-    while (v >= 0 && !color.isField(bgr.ptr<uchar>(v) + 3 * u)) --v;
-    const int extent = bgr.rows - 1 - v;
-    sampled.push_back(extent >= config.min_body_px ? static_cast<float>(v + 1)
+    extents.push_back(extent);
+    sample_run.push_back(run);
+  }
+  std::vector<float> sampled;
+  for (size_t i = 0; i < extents.size(); ++i) {
+    int extent = extents[i];
+    if (sample_run[i] >= 0) {
+      std::vector<int>& e = run_extents[static_cast<size_t>(sample_run[i])];
+      std::nth_element(e.begin(), e.begin() + e.size() / 2, e.end());
+      const double cap = config.body_height_tolerance * e[e.size() / 2] + config.row_step_px;
+      extent = std::min(extent, static_cast<int>(cap));
+    }
+    sampled.push_back(extent >= config.min_body_px ? static_cast<float>(bgr.rows - extent)
                                                    : static_cast<float>(bgr.rows));
   }
   std::vector<float> rows(static_cast<size_t>(bgr.cols));

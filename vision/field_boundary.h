@@ -19,6 +19,8 @@ struct FieldBoundaryConfig {
                              ///< is the robot's own body (feet): not scanned ...
   double min_body_width_share = 0.15;  ///< ... when its non-turf run along the bottom row is at
                                        ///< least this share of the width (lines are narrower)
+  double body_height_tolerance = 1.3;  ///< a column of such a run reaching higher than this
+                                       ///< times the run's median height is a line entering it
 };
 
 /// Where the field ends in the image: per column the first row (from the top) of the field.

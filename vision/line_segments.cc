@@ -71,8 +71,16 @@ double fitLine(const std::vector<ChainPoint>& points, size_t begin, size_t end,
   return std::sqrt(std::max(0.0, solver.eigenvalues()(0)) / static_cast<double>(end - begin));
 }
 
+/// Where the camera is and how it is turned, for turning fitted ground points back into rays.
+struct CameraFrame {
+  Eigen::Matrix3d camera_R_robot;
+  Eigen::Vector3d position;
+};
+
 void splitAndFit(const std::vector<ChainPoint>& points, size_t begin, size_t end,
-                 const LineSegmentConfig& cfg, std::vector<GroundSegment>* segments, int depth) {
+                 const LineSegmentConfig& cfg, const CameraFrame& camera,
+                 std::vector<GroundSegment>* segments, int depth) {
+  if (end <= begin) return;
   if (end - begin < static_cast<size_t>(cfg.min_points) || depth > 12) return;
   const Eigen::Vector2d a = points[begin].p, b = points[end - 1].p;
   const Eigen::Vector2d chord = (b - a).normalized();
@@ -84,8 +92,10 @@ void splitAndFit(const std::vector<ChainPoint>& points, size_t begin, size_t end
     if (distance > worst_distance) worst_distance = distance, worst = i;
   }
   if (worst_distance > cfg.split_distance_m) {
-    splitAndFit(points, begin, worst + 1, cfg, segments, depth + 1);
-    splitAndFit(points, worst, end, cfg, segments, depth + 1);
+    // The split point (a corner) belongs to neither straight piece: near a corner the spots
+    // of the crossing scanlines are pulled toward the other line, which would tilt both fits.
+    splitAndFit(points, begin, worst, cfg, camera, segments, depth + 1);
+    splitAndFit(points, worst + 1, end, cfg, camera, segments, depth + 1);
     return;
   }
   Eigen::Vector2d centroid, direction;
@@ -95,8 +105,12 @@ void splitAndFit(const std::vector<ChainPoint>& points, size_t begin, size_t end
   segment.b = centroid + direction * direction.dot(b - centroid);
   segment.rms_m = rms;
   segment.num_points = static_cast<int>(end - begin);
-  segment.ray_a_camera = points[begin].ray->ray_camera;
-  segment.ray_b_camera = points[end - 1].ray->ray_camera;
+  // The fitted end points' rays (a ground line is a straight line in the undistorted image, so
+  // re-projecting them with another camera tilt still gives this fit under that tilt).
+  segment.ray_a_camera = camera.camera_R_robot *
+                         (Eigen::Vector3d(segment.a.x(), segment.a.y(), 0.0) - camera.position);
+  segment.ray_b_camera = camera.camera_R_robot *
+                         (Eigen::Vector3d(segment.b.x(), segment.b.y(), 0.0) - camera.position);
   if (rms <= cfg.max_rms_m && segment.length() >= cfg.min_length_m) segments->push_back(segment);
 }
 
@@ -130,6 +144,8 @@ LineFeatures fitLineFeatures(const std::vector<SpotRay>& rays, const Pose3& robo
                              const LineSegmentConfig& config) {
   LineFeatures features;
   if (!config.enabled) return features;
+  const CameraFrame camera{robot_T_camera.rotation().transpose(),
+                           {robot_T_camera.x, robot_T_camera.y, robot_T_camera.z}};
   for (const bool vertical : {true, false}) {
     std::vector<const SpotRay*> spots;
     for (const SpotRay& ray : rays) {
@@ -144,7 +160,7 @@ LineFeatures fitLineFeatures(const std::vector<SpotRay>& rays, const Pose3& robo
       }
       if (points.size() < static_cast<size_t>(config.min_points)) continue;
       const size_t before = features.segments.size();
-      splitAndFit(points, 0, points.size(), config, &features.segments, 0);
+      splitAndFit(points, 0, points.size(), config, camera, &features.segments, 0);
       const bool straight = features.segments.size() == before + 1 &&
                             features.segments.back().num_points == static_cast<int>(points.size());
       // A bent chain that a circle fits well is an arc (centre circle, corner arcs): its chords

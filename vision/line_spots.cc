@@ -58,6 +58,20 @@ class SpotScanner {
     return k + dir * t;
   }
 
+  /// Ramp length (px) of the edge between the peak and the background along dir: the contrast
+  /// over the steepest two-pixel luma step. Paint ends at a sharp edge (blur and anti-aliasing
+  /// spread it over a few px); the shading of a round bar (the goal frame lying on the ground)
+  /// fades out over a good part of its width.
+  static float edgeRamp(const Scanline& line, int peak, int dir, int background) {
+    int k = peak, steepest = 0;
+    while (k + 2 * dir >= 0 && k + 2 * dir < line.n && line.luma(k) > background) {
+      steepest = std::max(steepest, line.luma(k) - line.luma(k + 2 * dir));
+      k += dir;
+    }
+    const int contrast = line.luma(peak) - background;
+    return steepest > 0 ? 2.f * contrast / steepest : static_cast<float>(line.n);
+  }
+
   /// Turf within `count` px, with nothing dark on the way: a white ball patch is followed by a
   /// black one before the turf, a line edge only by its anti-aliased blend.
   bool greenWithin(const Scanline& line, int from, int dir, int count) const {
@@ -95,6 +109,13 @@ class SpotScanner {
     }
     if (width < config_.min_width_ratio * expected - 1.f || expected <= 0.f) {
       if (stats_) ++stats_->too_narrow;
+      return;
+    }
+    const float max_ramp = static_cast<float>(
+        std::max(config_.max_edge_ramp_px, config_.max_edge_ramp_ratio * expected));
+    if (edgeRamp(line, peak, -1, background_before) > max_ramp ||
+        edgeRamp(line, peak, +1, background_after) > max_ramp) {
+      if (stats_) ++stats_->soft_edge;
       return;
     }
     const int gap =

@@ -22,6 +22,11 @@ struct LineSpotConfig {
   double green_gap_width_share = 0.3;  ///< ... plus this share of the expected width
   double dark_luma_ratio = 0.6;        ///< a non-turf pixel darker than this share of the turf's
                                        ///< median luma between edge and turf rejects the spot
+  double max_edge_ramp_px = 8.0;       ///< an edge ramping from peak to turf over more than this
+                                       ///< (px; blur and motion blur stay below) ...
+  double max_edge_ramp_ratio = 0.2;    ///< ... and this share of the expected width is no paint
+                                       ///< but the shading of a round white bar (the goal frame
+                                       ///< lying on the ground)
 };
 
 /// The centre of a bright run across a scanline that looks like a field line.
@@ -39,6 +44,7 @@ struct LineSpotStats {
   int too_wide = 0;
   int not_green_bounded = 0;
   int not_white = 0;
+  int soft_edge = 0;  ///< edges ramping too slowly for paint (round bars)
 };
 
 /// Scans the grid's rows and columns below the field boundary for bright, low-saturation runs with

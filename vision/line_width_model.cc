@@ -16,14 +16,18 @@ LineWidthModel::LineWidthModel(const CameraModel& camera, double line_width_m,
   horizon_.resize(horizon.size());
   // Columns without a horizon crossing (+-infinity) borrow the nearest finite value's side:
   // -infinity (ground throughout) the lowest finite horizon, +infinity (no ground) a huge row.
+  // With no finite value at all (a camera looking steeply down, e.g. the NAO's lower one) the
+  // horizon lies far above the image: a virtual one an image height above the top keeps d large,
+  // so width / d and width / d^2 interpolate like the slowly varying widths themselves (a horizon
+  // just above the top row would make them blow up there).
   float min_horizon = height_, min_finite = 1e6f;
   for (double h : horizon) {
     if (std::isfinite(h)) min_finite = std::min(min_finite, static_cast<float>(h));
   }
+  const float ground_horizon = min_finite < 1e6f ? std::min(min_finite, -1.f) : -height_;
   for (size_t u = 0; u < horizon.size(); ++u) {
     const double h = horizon[u];
-    horizon_[u] =
-        std::isfinite(h) ? static_cast<float>(h) : (h < 0 ? std::min(min_finite, -1.f) : 1e6f);
+    horizon_[u] = std::isfinite(h) ? static_cast<float>(h) : (h < 0 ? ground_horizon : 1e6f);
     min_horizon = std::min(min_horizon, horizon_[u]);
   }
   top_ = std::clamp(min_horizon + 2.f, 0.f, height_ - 1.f);

@@ -1,34 +1,55 @@
-// houghloc-offline: runs the pipeline on a recorded image folder (DESIGN §5.2).
+// houghloc-offline: runs the pipeline on a recorded image folder (DESIGN §5.2,
+// docs/offline.md).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 
+#include "tools/offline/evaluate_only.h"
+#include "tools/offline/mode_full.h"
+#include "tools/offline/mode_global_only.h"
 #include "tools/offline/mode_vision_only.h"
+#include "tools/offline/offline_config.h"
 #include "tools/offline/offline_context.h"
 #include "tools/offline/offline_options.h"
 
-int main(int argc, char** argv) {
+int main(int argc, char **argv) {
   using namespace houghloc;
-  CLI::App app{"houghloc-offline: runs houghloc on a recorded image folder (DESIGN 5.2)"};
+  CLI::App app{"houghloc-offline: runs houghloc on a recorded image folder "
+               "(DESIGN 5.2)"};
   OfflineOptions options;
   addOfflineOptions(app, &options);
   CLI11_PARSE(app, argc, argv);
 
-  const OfflineMode mode = offlineMode(options);
-  if (mode != OfflineMode::kVisionOnly || options.evaluate_only) {
-    const char* what = options.evaluate_only              ? "--evaluate-only"
-                       : mode == OfflineMode::kGlobalOnly ? "--global-only"
-                                                          : "the full mode (tracking)";
-    std::fprintf(stderr,
-                 "houghloc-offline: %s is not implemented yet in this build; "
-                 "use --vision-only\n",
-                 what);
-    return 3;
-  }
   try {
+    if (options.print_config) {
+      std::fputs(defaultConfigYaml().c_str(), stdout);
+      return 0;
+    }
+    if (options.folder.empty()) {
+      std::fprintf(
+          stderr,
+          "FOLDER is required\nRun with --help for more information.\n");
+      return 106; // CLI11's exit code for a missing required argument
+    }
+    const OfflineMode mode = offlineMode(options);
+    if (mode == OfflineMode::kVisionOnly && !options.video_file.empty()) {
+      std::fprintf(stderr,
+                   "houghloc-offline: --video needs a localization mode\n");
+      return 2;
+    }
     const OfflineContext context = loadOfflineContext(options);
-    return runVisionOnly(context);
-  } catch (const std::exception& e) {
+    if (options.evaluate_only)
+      return runEvaluateOnly(context, mode == OfflineMode::kGlobalOnly);
+    switch (mode) {
+    case OfflineMode::kVisionOnly:
+      return runVisionOnly(context);
+    case OfflineMode::kGlobalOnly:
+      return runGlobalOnly(context);
+    case OfflineMode::kFull:
+      return runFull(context);
+    }
+    return 2;
+  } catch (const std::exception &e) {
     std::fprintf(stderr, "houghloc-offline: error: %s\n", e.what());
     return 2;
   }

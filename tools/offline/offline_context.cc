@@ -2,46 +2,36 @@
 
 #include <filesystem>
 #include <fstream>
-#include <opencv2/core/persistence.hpp>
 #include <stdexcept>
 
 #include "field_models/field_yaml.h"
 #include "field_models/standard_fields.h"
-#include "vision/vision_config_io.h"
+#include "tools/offline/hint_conversion.h"
+#include "tools/offline/offline_config.h"
 
 namespace houghloc {
 namespace {
 
 namespace fs = std::filesystem;
 
-VisionConfig loadVisionConfig(const std::string& path) {
-  if (path.empty()) return {};
-  if (!fs::exists(path)) throw std::runtime_error(path + ": config file does not exist");
-  cv::FileStorage storage;
-  try {
-    storage.open(path, cv::FileStorage::READ);
-  } catch (const cv::Exception& e) {
-    throw std::runtime_error(path + ": not a valid YAML config: " + e.err);
-  }
-  if (!storage.isOpened()) throw std::runtime_error(path + ": cannot be read as YAML");
-  return readVisionConfig(storage["vision"], path);
-}
-
-void prepareOutput(const std::string& dir) {
+void prepareOutput(const std::string &dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) throw std::runtime_error(dir + ": cannot create output folder: " + ec.message());
+  if (ec)
+    throw std::runtime_error(dir +
+                             ": cannot create output folder: " + ec.message());
   const fs::path probe = fs::path(dir) / ".houghloc-write-test";
   {
     std::ofstream out(probe);
-    if (!out) throw std::runtime_error(dir + ": output folder is not writable");
+    if (!out)
+      throw std::runtime_error(dir + ": output folder is not writable");
   }
   fs::remove(probe, ec);
 }
 
-}  // namespace
+} // namespace
 
-OfflineContext loadOfflineContext(const OfflineOptions& options) {
+OfflineContext loadOfflineContext(const OfflineOptions &options) {
   OfflineContext context;
   context.options = options;
   if (!fs::is_directory(options.folder)) {
@@ -53,16 +43,19 @@ OfflineContext loadOfflineContext(const OfflineOptions& options) {
   } else if (!options.standard.empty()) {
     try {
       context.field = makeStandardField(options.standard);
-    } catch (const std::invalid_argument& e) {
+    } catch (const std::invalid_argument &e) {
       throw std::runtime_error(std::string("--standard: ") + e.what());
     }
   } else if (context.recording.field) {
     context.field = context.recording.field;
   }
-  context.vision_config = loadVisionConfig(options.config_file);
+  const OfflineConfig config = loadOfflineConfig(options.config_file);
+  context.vision_config = config.vision;
+  context.localizer_config = config.localizer;
+  context.hints = convertHints(context.recording);
   if (context.field) {
     context.vision_config.line_width_m = context.field->line_width;
-    for (const Arc2& arc : context.field->arcs) {
+    for (const Arc2 &arc : context.field->arcs) {
       if (arc.isFullCircle() && arc.center.norm() < 1e-6) {
         context.vision_config.segments.circle_radius_m = arc.radius;
       }
@@ -72,13 +65,15 @@ OfflineContext loadOfflineContext(const OfflineOptions& options) {
   context.first_frame = std::min(options.start, frames);
   context.end_frame = options.end < 0 ? frames : std::min(options.end, frames);
   if (context.end_frame < context.first_frame) {
-    throw std::runtime_error("--end " + std::to_string(options.end) + " is before --start " +
+    throw std::runtime_error("--end " + std::to_string(options.end) +
+                             " is before --start " +
                              std::to_string(options.start));
   }
-  context.out_dir =
-      options.out_dir.empty() ? (fs::path(options.folder) / "houghloc").string() : options.out_dir;
+  context.out_dir = options.out_dir.empty()
+                        ? (fs::path(options.folder) / "houghloc").string()
+                        : options.out_dir;
   prepareOutput(context.out_dir);
   return context;
 }
 
-}  // namespace houghloc
+} // namespace houghloc

@@ -2,8 +2,11 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "field_models/field_model.h"
+#include "localization/localization_hint.h"
+#include "localization/localizer.h"
 #include "tools/offline/offline_options.h"
 #include "tools/recording/recording.h"
 #include "vision/vision_pipeline.h"
@@ -14,9 +17,11 @@ namespace houghloc {
 struct OfflineContext {
   OfflineOptions options;
   Recording recording;
-  std::optional<FieldModel> field;  ///< --field, --standard, or FOLDER/field.yaml
-  VisionConfig vision_config;       ///< defaults, the --config file, then the map's line width
-  std::string out_dir;              ///< exists and is writable
+  std::optional<FieldModel> field;      ///< --field, --standard, or FOLDER/field.yaml
+  VisionConfig vision_config;           ///< defaults, the --config file, then the map's line width
+  LocalizerConfig localizer_config;     ///< defaults, then the --config file
+  std::vector<LocalizationHint> hints;  ///< hints.csv, in time order
+  std::string out_dir;                  ///< exists and is writable
   int first_frame = 0, end_frame = 0;
 };
 

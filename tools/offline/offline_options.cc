@@ -5,24 +5,35 @@
 namespace houghloc {
 
 void addOfflineOptions(CLI::App& app, OfflineOptions* o) {
-  app.add_option("FOLDER", o->folder, "recorded image folder (DESIGN 5.1)")->required();
+  // Not ->required(): --print-config needs no folder; main() checks it.
+  app.add_option("FOLDER", o->folder, "recorded image folder (DESIGN 5.1)");
   app.add_option("-o,--out", o->out_dir, "output folder (default FOLDER/houghloc/)");
   auto* field = app.add_option("--field", o->field_file, "field map YAML");
   app.add_option("--standard", o->standard, "standard field: spl, spl2019, kid, adult, msl")
       ->excludes(field);
-  app.add_option("--config", o->config_file, "config YAML with a vision: section (and others)");
+  app.add_option("--config", o->config_file,
+                 "config YAML with vision:, global:, tracker:, localizer: sections");
+  app.add_flag("--print-config", o->print_config,
+               "write the default config (every section) to stdout and exit");
   auto* vision =
       app.add_flag("--vision-only", o->vision_only, "run vision alone, write points.csv");
   app.add_flag("--global-only", o->global_only, "vision + global localization per frame")
       ->excludes(vision);
-  app.add_flag("--overlay", o->overlay, "draw points, boundary and horizon into OUT/overlay/");
+  app.add_flag("--overlay", o->overlay, "one overlay image per frame in OUT/overlay/");
+  app.add_option("--video", o->video_file,
+                 "write the overlays as a video (.mp4: mp4v codec, .avi: MJPG)");
   app.add_flag("--points", o->points, "write points.csv");
   app.add_flag("--quiet", o->quiet, "no progress output");
   app.add_option("--start", o->start, "first frame index")->check(CLI::NonNegativeNumber);
   app.add_option("--end", o->end, "one past the last frame index (default: all)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--threads", o->threads,
+                 "1, or 2: vision of the next frame overlaps localization (same results)")
+      ->check(CLI::Range(1, 2));
   app.add_flag("--evaluate-only", o->evaluate_only,
-               "recompute metrics from the files already in OUT (later issue)");
+               "recompute metrics.json and trajectory.png from poses.csv/hypotheses.csv in OUT "
+               "(with --global-only: of a --global-only run)")
+      ->excludes(vision);
 }
 
 OfflineMode offlineMode(const OfflineOptions& o) {

@@ -8,21 +8,24 @@ class App;
 
 namespace houghloc {
 
-/// The houghloc-offline command line (DESIGN §5.2).
+/// The houghloc-offline command line (DESIGN §5.2, docs/offline.md).
 struct OfflineOptions {
-  std::string folder;
+  std::string folder;   ///< required unless --print-config
   std::string out_dir;  ///< default FOLDER/houghloc/
   std::string field_file;
   std::string standard;
   std::string config_file;
+  std::string video_file;  ///< --video: the overlays as a video (.mp4: mp4v, .avi: MJPG)
   bool vision_only = false;
   bool global_only = false;
   bool overlay = false;
   bool points = false;
   bool quiet = false;
   bool evaluate_only = false;
-  int start = 0;  ///< first frame index
-  int end = -1;   ///< one past the last frame index; -1 = all
+  bool print_config = false;
+  int start = 0;    ///< first frame index
+  int end = -1;     ///< one past the last frame index; -1 = all
+  int threads = 1;  ///< 2: vision of frame k+1 overlaps localization of frame k
 };
 
 enum class OfflineMode { kVisionOnly, kGlobalOnly, kFull };

@@ -1,0 +1,39 @@
+#include "tools/offline/offline_config.h"
+
+#include <filesystem>
+#include <opencv2/core/persistence.hpp>
+#include <stdexcept>
+
+#include "localization/localizer_config_io.h"
+#include "vision/vision_config_io.h"
+
+namespace houghloc {
+
+OfflineConfig loadOfflineConfig(const std::string& path) {
+  OfflineConfig config;
+  if (path.empty()) return config;
+  if (!std::filesystem::exists(path)) {
+    throw std::runtime_error(path + ": config file does not exist");
+  }
+  cv::FileStorage storage;
+  try {
+    storage.open(path, cv::FileStorage::READ);
+  } catch (const cv::Exception& e) {
+    throw std::runtime_error(path + ": not a valid YAML config: " + e.err);
+  }
+  if (!storage.isOpened()) throw std::runtime_error(path + ": cannot be read as YAML");
+  // Other sections (a node's `lcm:`, say) belong to other tools and are left alone.
+  const cv::FileNode root = storage.root();
+  config.vision = readVisionConfig(root["vision"], path);
+  config.localizer = readLocalizerConfig(root, path);
+  return config;
+}
+
+std::string defaultConfigYaml() {
+  cv::FileStorage storage(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);
+  writeVisionConfig(storage, VisionConfig{});
+  writeLocalizerConfig(storage, LocalizerConfig{});
+  return storage.releaseAndGetString();
+}
+
+}  // namespace houghloc

@@ -1,0 +1,154 @@
+#include "tools/offline/vision_stage.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "tools/offline/offline_output.h"
+
+namespace houghloc {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+/// Image loading and one VisionPipeline per camera id, fed strictly in frame order.
+class VisionWorker {
+ public:
+  VisionWorker(const OfflineContext& context, bool keep_images)
+      : context_(context), keep_images_(keep_images) {}
+
+  VisionFrame process(int index) {
+    const Recording& rec = context_.recording;
+    VisionFrame out;
+    out.index = index;
+    out.frame = &rec.frames[static_cast<size_t>(index)];
+    out.intrinsics = &rec.intrinsicsFor(*out.frame);
+    out.result.ground.t_us = out.frame->t_us;
+    const auto load_start = Clock::now();
+    std::optional<cv::Mat> image = loadFrameImage(context_, *out.frame, &out.problem);
+    out.load_ms = msSince(load_start);
+    if (!image) {
+      out.skipped = true;
+      return out;
+    }
+    auto& pipeline = pipelines_[out.frame->camera_id];
+    if (!pipeline) {
+      pipeline = std::make_unique<VisionPipeline>(*out.intrinsics, context_.vision_config);
+    }
+    const auto start = Clock::now();
+    try {
+      out.result = pipeline->process(*image, out.frame->robot_T_camera, out.frame->t_us);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error((fs::path(rec.folder) / out.frame->image).string() + ": " +
+                               e.what());
+    }
+    out.vision_ms = msSince(start);
+    if (keep_images_) out.image = std::move(image);
+    return out;
+  }
+
+ private:
+  const OfflineContext& context_;
+  bool keep_images_;
+  std::map<std::string, std::unique_ptr<VisionPipeline>> pipelines_;
+};
+
+/// A bounded hand-over queue between the vision thread and the consumer.
+class FrameQueue {
+ public:
+  explicit FrameQueue(size_t capacity) : capacity_(capacity) {}
+
+  /// False when the consumer has stopped.
+  bool push(VisionFrame frame) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    space_.wait(lock, [&] { return frames_.size() < capacity_ || stopped_; });
+    if (stopped_) return false;
+    frames_.push_back(std::move(frame));
+    ready_.notify_one();
+    return true;
+  }
+  /// False when the producer finished (or failed: then `error` is set) and nothing is left.
+  bool pop(VisionFrame* frame) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    ready_.wait(lock, [&] { return !frames_.empty() || done_; });
+    if (frames_.empty()) return false;
+    *frame = std::move(frames_.front());
+    frames_.pop_front();
+    space_.notify_one();
+    return true;
+  }
+  void finish(std::exception_ptr error) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    done_ = true;
+    error_ = error;
+    ready_.notify_all();
+  }
+  void stop() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopped_ = true;
+    space_.notify_all();
+  }
+  std::exception_ptr error() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return error_;
+  }
+
+ private:
+  size_t capacity_;
+  std::mutex mutex_;
+  std::condition_variable ready_, space_;
+  std::deque<VisionFrame> frames_;
+  bool done_ = false, stopped_ = false;
+  std::exception_ptr error_;
+};
+
+}  // namespace
+
+void runVisionStage(const OfflineContext& context, int threads, bool keep_images,
+                    const std::function<void(VisionFrame&)>& consume) {
+  VisionWorker worker(context, keep_images);
+  if (threads <= 1) {
+    for (int i = context.first_frame; i < context.end_frame; ++i) {
+      VisionFrame frame = worker.process(i);
+      consume(frame);
+    }
+    return;
+  }
+  // One frame in the queue plus the one being processed keeps both threads busy.
+  FrameQueue queue(1);
+  std::thread producer([&] {
+    std::exception_ptr error;
+    try {
+      for (int i = context.first_frame; i < context.end_frame; ++i) {
+        if (!queue.push(worker.process(i))) break;
+      }
+    } catch (...) {
+      error = std::current_exception();
+    }
+    queue.finish(error);
+  });
+  try {
+    VisionFrame frame;
+    while (queue.pop(&frame)) consume(frame);
+  } catch (...) {
+    queue.stop();
+    producer.join();
+    throw;
+  }
+  producer.join();
+  if (std::exception_ptr error = queue.error()) std::rethrow_exception(error);
+}
+
+}  // namespace houghloc
