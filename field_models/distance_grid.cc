@@ -28,22 +28,6 @@ DistanceGrid::DistanceGrid(const FieldModel& field, const DistanceGridConfig& co
   }
 }
 
-double DistanceGrid::distance(const Eigen::Vector2d& p_field) const {
-  // Hot path of every scoring loop: inside the grid there is no clamping and no hypot.
-  const double gx = (p_field.x() - origin_.x()) * inv_resolution_;
-  const double gy = (p_field.y() - origin_.y()) * inv_resolution_;
-  if (gx >= 0.0 && gy >= 0.0 && gx < cols_ - 1.0 && gy < rows_ - 1.0) {
-    const int c0 = static_cast<int>(gx), r0 = static_cast<int>(gy);
-    const double fx = gx - c0, fy = gy - r0;
-    const float* row0 = &values_[static_cast<size_t>(r0) * cols_ + c0];
-    const float* row1 = row0 + cols_;
-    const double top = row0[0] + fx * (row0[1] - row0[0]);
-    const double bottom = row1[0] + fx * (row1[1] - row1[0]);
-    return top + fy * (bottom - top);
-  }
-  return distance(p_field, nullptr);
-}
-
 double DistanceGrid::distance(const Eigen::Vector2d& p_field, Eigen::Vector2d* gradient) const {
   if (values_.empty() || !p_field.allFinite()) {
     if (gradient) gradient->setZero();

@@ -8,9 +8,9 @@
 namespace houghloc {
 
 struct DistanceGridConfig {
-  double resolution_m = 0.02;  ///< cell size
-  double margin_m = 0.5;       ///< extra area beyond the border strip covered by the grid
-  double max_distance_m = 5.0; ///< stored distances are clamped to this (saves nothing, bounds it)
+  double resolution_m = 0.02;   ///< cell size
+  double margin_m = 0.5;        ///< extra area beyond the border strip covered by the grid
+  double max_distance_m = 5.0;  ///< stored distances are clamped to this (saves nothing, bounds it)
 };
 
 /// Distance from the nearest line feature's centre line, precomputed on a regular grid over the
@@ -22,7 +22,21 @@ class DistanceGrid {
   DistanceGrid(const FieldModel& field, const DistanceGridConfig& config = {});
 
   /// Distance (m) from p_field to the nearest line, bilinear between exact values at the nodes.
-  double distance(const Eigen::Vector2d& p_field) const;
+  /// Inline: the hot path of every scoring loop (inside the grid: no clamping, no hypot).
+  double distance(const Eigen::Vector2d& p_field) const {
+    const double gx = (p_field.x() - origin_.x()) * inv_resolution_;
+    const double gy = (p_field.y() - origin_.y()) * inv_resolution_;
+    if (gx >= 0.0 && gy >= 0.0 && gx < cols_ - 1.0 && gy < rows_ - 1.0) {
+      const int c0 = static_cast<int>(gx), r0 = static_cast<int>(gy);
+      const double fx = gx - c0, fy = gy - r0;
+      const float* row0 = &values_[static_cast<size_t>(r0) * cols_ + c0];
+      const float* row1 = row0 + cols_;
+      const double top = row0[0] + fx * (row0[1] - row0[0]);
+      const double bottom = row1[0] + fx * (row1[1] - row1[0]);
+      return top + fy * (bottom - top);
+    }
+    return distance(p_field, nullptr);
+  }
   /// Same, and the gradient of the interpolated distance (unit-less, points away from lines).
   double distance(const Eigen::Vector2d& p_field, Eigen::Vector2d* gradient) const;
 

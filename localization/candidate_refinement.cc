@@ -35,15 +35,11 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
   PoseHypothesis h = candidate;
   const bool was_parallel = h.kind == HypothesisKind::kParallel;
   const Eigen::Vector2d frozen = was_parallel ? h.line_direction : Eigen::Vector2d::Zero();
-  // Coarse iterations on a subsample, then a few on all points.
-  RefinementConfig coarse = config_.refinement;
-  coarse.max_distance_m *= 1.5;
-  Pose2 start = refinePose(subsamplePoints(points, config_.prescore_points), h.field_T_robot,
-                           map_.features(), coarse, frozen)
-                    .field_T_robot;
+  // A few iterations on the refinement points (the coarse ones on the pre-score subsample ran
+  // in convergeCandidates).
   RefinementConfig fine = config_.refinement;
   fine.iterations = 3;
-  RefinementResult r = refinePose(points, start, map_.features(), fine, frozen);
+  RefinementResult r = refinePose(points, h.field_T_robot, map_.features(), fine, frozen);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(r.information.topLeftCorner<2, 2>());
   const bool observed = eig.eigenvalues()(0) >= config_.min_observed_weight;
   if (observed && was_parallel) {
@@ -84,11 +80,32 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
   for (double s = s_min; s <= s_max + 1e-9; s += step) {
     const Eigen::Vector2d t = t0 + s * u;
     s_values.push_back(s);
-    scores.push_back(totalScore(Pose2(t.x(), t.y(), theta), few, evidence));
+    scores.push_back(
+        scorePose(few, Pose2(t.x(), t.y(), theta), map_.grid(), config_.scoring).score);
   }
   if (scores.empty()) return {};
-  const double best = *std::max_element(scores.begin(), scores.end());
-  const double floor = best - config_.line_scan_tolerance * std::max(std::abs(best), 1.0);
+  // Subtract the negative evidence lazily, best positive score first: the penalty is >= 0, so
+  // once a position's positive score is below the floor of the best total so far, neither it
+  // nor any later one can reach the floor.
+  std::vector<std::size_t> order(scores.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return scores[a] > scores[b]; });
+  const double tolerance = config_.line_scan_tolerance;
+  auto floorOf = [&](double b) { return b - tolerance * std::max(std::abs(b), 1.0); };
+  double best = -1e300;
+  std::vector<char> done(scores.size(), 0);
+  for (std::size_t i : order) {
+    if (best > -1e300 && scores[i] < floorOf(best)) break;
+    const Eigen::Vector2d t = t0 + s_values[i] * u;
+    scores[i] -= evidence.penalty(Pose2(t.x(), t.y(), theta), map_);
+    done[i] = 1;
+    best = std::max(best, scores[i]);
+  }
+  for (std::size_t i = 0; i < scores.size(); ++i) {
+    if (!done[i]) scores[i] = -1e300;  // below the floor
+  }
+  const double floor = floorOf(best);
   struct Stretch {
     double begin, end, top;
   };

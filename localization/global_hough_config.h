@@ -17,8 +17,10 @@ namespace houghloc {
 /// Everything GlobalHoughLocalizer can be tuned with (YAML section `global:`, DESIGN §2).
 struct GlobalHoughConfig {
   double max_range_m = 8.0;           ///< points farther than this are dropped
-  std::size_t max_points = 1500;      ///< larger inputs are subsampled evenly
+  std::size_t max_points = 500;       ///< larger inputs are subsampled evenly
   std::size_t prescore_points = 80;   ///< points used to pre-score the raw candidates
+  std::size_t refine_points = 160;    ///< points used by the final refinement and score (even
+                                      ///< subsample; more add time, not accuracy)
   std::size_t min_points = 6;         ///< fewer points: no hypothesis
   double min_spread_m = 0.1;          ///< std dev along the points' main axis, else none
   double min_observed_weight = 4.0;   ///< point weight on lines across a direction for it to

@@ -11,6 +11,12 @@ namespace {
 // Candidates whose coarse refinement ends this close are the same optimum.
 constexpr double kConvergedM = 0.03;
 constexpr double kConvergedRad = 0.01;
+// Candidates kept after the cheap first scoring round, in multiples of PruningConfig::keep.
+constexpr int kFirstRoundShare = 4;
+// Points scored per heading of the scan about a landmark.
+constexpr std::size_t kScanPoints = 30;
+// Gauss-Newton iterations of the coarse stage (on the pre-score subsample).
+constexpr int kCoarseIterations = 6;
 
 }  // namespace
 
@@ -45,14 +51,24 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
     normalizeWeights(out, config_.hypotheses);
     return out;
   }
-  scoreCandidates(located, subsamplePoints(points, config_.prescore_points));  // step 4 ...
-  located = pruneCandidates(located, config_.pruning);  // ... segment extents
-  located = convergeCandidates(located, subsamplePoints(points, config_.prescore_points));
+  // Step 4 scoring, in two rounds: a quarter of the pre-score points ranks all candidates, the
+  // best few times `keep` are scored with all pre-score points, then pruned by segment extents.
+  const WeightedPoints few = subsamplePoints(points, config_.prescore_points);
+  if (located.size() > static_cast<std::size_t>(kFirstRoundShare * config_.pruning.keep)) {
+    scoreCandidates(located, subsamplePoints(points, config_.prescore_points / 4));
+    std::stable_sort(located.begin(), located.end(),
+                     [](const auto& a, const auto& b) { return a.score > b.score; });
+    located.resize(kFirstRoundShare * config_.pruning.keep);
+  }
+  scoreCandidates(located, few);
+  located = pruneCandidates(located, config_.pruning);
+  located = convergeCandidates(located, few);
   const VisibilityEvidence evidence(frame, points, config_.negative);
   std::vector<PoseHypothesis> refined;
   int line_scans = 0;
+  const WeightedPoints fine = subsamplePoints(points, config_.refine_points);
   for (const PoseHypothesis& c : located) {
-    for (PoseHypothesis& h : refineCandidate(c, points, evidence, &line_scans)) {
+    for (PoseHypothesis& h : refineCandidate(c, fine, evidence, &line_scans)) {
       refined.push_back(h);
     }
   }
@@ -113,7 +129,7 @@ std::vector<std::vector<TranslationConstraint>> GlobalHoughLocalizer::translatio
 std::vector<PoseHypothesis> GlobalHoughLocalizer::landmarkPoses(
     const WeightedPoints& points, const std::vector<OrientationCandidate>& headings) const {
   std::vector<PoseHypothesis> out;
-  const WeightedPoints few = subsamplePoints(points, config_.prescore_points);
+  const WeightedPoints few = subsamplePoints(points, kScanPoints);
   auto append = [&](const Eigen::Vector2d& p_robot, const Eigen::Vector2d& p_field,
                     HypothesisSource source, double support) {
     std::vector<OrientationCandidate> all = headings;
@@ -131,7 +147,8 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::landmarkPoses(
     const double size = map_.field().marks.back().size;
     for (const Eigen::Vector2d& blob : findMarkBlobs(points, size, config_.landmarks)) {
       for (const Mark& mark : map_.field().marks) {
-        for (auto& h : landmarkCandidates(blob, mark.center, headings, HypothesisSource::kMark, 1.0)) {
+        for (auto& h :
+             landmarkCandidates(blob, mark.center, headings, HypothesisSource::kMark, 1.0)) {
           out.push_back(h);
         }
       }
@@ -173,10 +190,13 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::convergeCandidates(
   // to the same optimum, and only distinct optima need the full refinement.
   RefinementConfig coarse = config_.refinement;
   coarse.max_distance_m *= 1.5;
+  coarse.iterations = std::min(coarse.iterations, kCoarseIterations);
+  coarse.converged_m = 1e-3;  // the fine stage follows
   for (PoseHypothesis& c : candidates) {
     const Eigen::Vector2d frozen =
         c.kind == HypothesisKind::kParallel ? c.line_direction : Eigen::Vector2d::Zero();
-    c.field_T_robot = refinePose(few, c.field_T_robot, map_.features(), coarse, frozen).field_T_robot;
+    c.field_T_robot =
+        refinePose(few, c.field_T_robot, map_.features(), coarse, frozen).field_T_robot;
     c.score = scorePose(few, c.field_T_robot, map_.grid(), config_.scoring).score;
   }
   std::stable_sort(candidates.begin(), candidates.end(),
@@ -185,11 +205,10 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::convergeCandidates(
   for (const PoseHypothesis& c : candidates) {
     bool same = false;
     for (const PoseHypothesis& k : out) {
-      same |= k.kind == c.kind &&
-              (k.field_T_robot.translation() - c.field_T_robot.translation()).norm() <
-                  kConvergedM &&
-              std::abs(angleDifference(k.field_T_robot.theta, c.field_T_robot.theta)) <
-                  kConvergedRad;
+      same |=
+          k.kind == c.kind &&
+          (k.field_T_robot.translation() - c.field_T_robot.translation()).norm() < kConvergedM &&
+          std::abs(angleDifference(k.field_T_robot.theta, c.field_T_robot.theta)) < kConvergedRad;
     }
     if (!same) out.push_back(c);
   }

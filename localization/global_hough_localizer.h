@@ -39,7 +39,8 @@ class GlobalHoughLocalizer {
       const WeightedPoints& points, const std::vector<OrientationCandidate>& headings) const;
   /// Step 4 scoring: score and inlier share of every candidate against the whole map.
   void scoreCandidates(std::vector<PoseHypothesis>& candidates, const WeightedPoints& points) const;
-  /// Step 4 refinement of one survivor: Gauss-Newton, observability (kParallel when only parallel
+  /// Step 4 refinement of one survivor (after convergeCandidates, which runs the coarse
+  /// iterations): Gauss-Newton, observability (kParallel when only parallel
   /// lines constrain it; then a scan along the lines places the mean), covariance, final score
   /// including negative evidence.
   /// A kParallel candidate can come back as several hypotheses, one per stretch of the lines

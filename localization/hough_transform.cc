@@ -35,27 +35,29 @@ HoughTransform::HoughTransform(const HoughConfig& config, double rho_max_m) : co
   config_.theta_step_rad = M_PI / num_theta_;  // an exact divisor of pi keeps the wrap exact
   num_rho_ = houghRows(config.rho_step_m, rho_max_m);
   centre_row_ = (num_rho_ - 1) / 2;
-  cos_.resize(num_theta_);
+  cos_.resize(num_theta_);  // float: see addPoint
   sin_.resize(num_theta_);
   for (int i = 0; i < num_theta_; ++i) {
-    cos_[i] = std::cos(theta(i));
-    sin_[i] = std::sin(theta(i));
+    cos_[i] = static_cast<float>(std::cos(theta(i)));
+    sin_[i] = static_cast<float>(std::sin(theta(i)));
   }
   cells_.assign(static_cast<std::size_t>(num_theta_) * num_rho_, 0.0f);
 }
 
 void HoughTransform::addPoint(const Eigen::Vector2d& p, double weight) {
   if (!p.allFinite() || !std::isfinite(weight) || cells_.empty()) return;
-  const double inv_step = 1.0 / config_.rho_step_m;
-  const double x = p.x() * inv_step, y = p.y() * inv_step;
-  const double last = num_rho_ - 1.0;
+  // Single precision is plenty for a row index (|rho| / rho_step < 1e4).
+  const float inv_step = static_cast<float>(1.0 / config_.rho_step_m);
+  const float x = static_cast<float>(p.x()) * inv_step, y = static_cast<float>(p.y()) * inv_step;
+  const float centre = static_cast<float>(centre_row_);
+  const float last = num_rho_ - 1.0f;
   const float w = static_cast<float>(weight);
   float* column = cells_.data();
   for (int i = 0; i < num_theta_; ++i, column += num_rho_) {
-    const double r = x * cos_[i] + y * sin_[i] + centre_row_;
-    if (r >= 0.0 && r < last) {  // the usual case: both rows inside, no floor needed
+    const float r = x * cos_[i] + y * sin_[i] + centre;
+    if (r >= 0.0f && r < last) {  // the usual case: both rows inside, no floor needed
       const int j = static_cast<int>(r);
-      const float f = static_cast<float>(r - j);
+      const float f = r - j;
       column[j] += w - w * f;
       column[j + 1] += w * f;
     } else {

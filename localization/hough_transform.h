@@ -54,7 +54,7 @@ class HoughTransform {
   int num_theta_ = 0;
   int num_rho_ = 0;
   int centre_row_ = 0;
-  std::vector<double> cos_, sin_;
+  std::vector<float> cos_, sin_;
   std::vector<float> cells_;
 };
 

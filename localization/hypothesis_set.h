@@ -13,7 +13,7 @@ struct HypothesisSetConfig {
   int max_hypotheses = 12;         ///< at most this many are returned
 };
 
-/// True when a and b describe the same pose (for a kParallel one: the same line, any position
+/// True when a and b describe the same pose (for two kParallel ones: the same line, any position
 /// along it).
 bool sameHypothesis(const PoseHypothesis& a, const PoseHypothesis& b,
                     const HypothesisSetConfig& config);

@@ -8,7 +8,7 @@
 namespace houghloc {
 namespace {
 
-constexpr std::size_t kMaxVotingPoints = 150;  // points voting for the circle centre
+constexpr std::size_t kMaxVotingPoints = 100;  // points voting for the circle centre
 
 /// Coverage of angles around a centre: 2 pi minus the largest gap between sorted angles.
 double angularCoverage(std::vector<double> angles) {
@@ -73,7 +73,7 @@ std::optional<CircleObservation> fitCircle(const WeightedPoints& points, double 
       h += points.weights[i] * j * j.transpose();
       b += points.weights[i] * j * (n - radius);
       support += points.weights[i];
-      angles.push_back(std::atan2(v.y(), v.x()));
+      if (it == 5) angles.push_back(std::atan2(v.y(), v.x()));  // coverage of the final fit
     }
     if (support <= 0.0 || h.determinant() < 1e-9) return std::nullopt;
     centre -= h.ldlt().solve(b);

@@ -20,9 +20,9 @@ struct LandmarkConfig {
   /// heading is scanned at this step (rad) scoring all points (the halfway line through the
   /// circle, the lines next to a mark) ...
   double heading_scan_step_rad = 2.0 * M_PI / 180.0;
-  int heading_scan_maxima = 4;  ///< ... and this many best local maxima become candidates
-  double mark_link_m = 0.05;         ///< extra extent allowed around a mark for noise
-  double mark_isolation_m = 0.35;    ///< no other point this close to a mark blob
+  int heading_scan_maxima = 4;     ///< ... and this many best local maxima become candidates
+  double mark_link_m = 0.05;       ///< extra extent allowed around a mark for noise
+  double mark_isolation_m = 0.35;  ///< no other point this close to a mark blob
   int mark_min_points = 3;
   int max_marks = 4;  ///< mark blobs used per frame
 };

@@ -30,7 +30,7 @@ ConfigSection globalSection(GlobalHoughConfig& c) {
                     HL_MEMBER(c, line_scan_step_m),   HL_MEMBER(c, line_scan_tolerance),
                     HL_MEMBER(c, max_line_scans),     HL_MEMBER(c, parallel_floor_m),
                     HL_MEMBER(c, parallel_floor_rad), HL_MEMBER(c, use_circle),
-                    HL_MEMBER(c, use_marks)};
+                    HL_MEMBER(c, use_marks),          HL_MEMBER(c, refine_points)};
   section.children = {
       {"map", mapSection(c.map)},
       {"orientation",
@@ -64,7 +64,9 @@ ConfigSection globalSection(GlobalHoughConfig& c) {
        {{HL_MEMBER(c.landmarks, circle_cell_m), HL_MEMBER(c.landmarks, circle_band_m),
          HL_MEMBER(c.landmarks, circle_min_support), HL_MEMBER(c.landmarks, circle_min_arc_rad),
          HL_MEMBER(c.landmarks, mark_link_m), HL_MEMBER(c.landmarks, mark_isolation_m),
-         HL_MEMBER(c.landmarks, mark_min_points), HL_MEMBER(c.landmarks, max_marks)}}},
+         HL_MEMBER(c.landmarks, mark_min_points), HL_MEMBER(c.landmarks, max_marks),
+         HL_MEMBER(c.landmarks, heading_scan_step_rad),
+         HL_MEMBER(c.landmarks, heading_scan_maxima)}}},
       {"hypotheses",
        {{HL_MEMBER(c.hypotheses, merge_distance_m), HL_MEMBER(c.hypotheses, merge_angle_rad),
          HL_MEMBER(c.hypotheses, temperature), HL_MEMBER(c.hypotheses, max_hypotheses)}}}};

@@ -123,10 +123,10 @@ void MapSignature::bucketEvidence(const std::vector<Eigen::Vector2d>& samples) {
   bucket_cols_ = static_cast<int>(std::ceil(2.0 * (field_.outerHalfLength() + b) / b)) + 1;
   bucket_rows_ = static_cast<int>(std::ceil(2.0 * (field_.outerHalfWidth() + b) / b)) + 1;
   auto bucket = [&](const Eigen::Vector2d& p) {
-    const int c = std::clamp(static_cast<int>((p.x() - bucket_origin_.x()) / b), 0,
-                             bucket_cols_ - 1);
-    const int r = std::clamp(static_cast<int>((p.y() - bucket_origin_.y()) / b), 0,
-                             bucket_rows_ - 1);
+    const int c =
+        std::clamp(static_cast<int>((p.x() - bucket_origin_.x()) / b), 0, bucket_cols_ - 1);
+    const int r =
+        std::clamp(static_cast<int>((p.y() - bucket_origin_.y()) / b), 0, bucket_rows_ - 1);
     return r * bucket_cols_ + c;
   };
   bucket_start_.assign(static_cast<std::size_t>(bucket_cols_) * bucket_rows_ + 1, 0);

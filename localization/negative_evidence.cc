@@ -99,14 +99,23 @@ void VisibilityEvidence::rasterise(const std::vector<GroundPolygon>& polygons) {
       }
     }
   }
-  // Erode the region by the margin (square structuring element): bit 1.
+  // Erode the region by the margin (square structuring element, separable: rows, then
+  // columns): bit 1.
+  std::vector<unsigned char> across(cells_.size(), 0);
+  for (int r = 0; r < rows_; ++r) {
+    for (int c = margin; c < cols_ - margin; ++c) {
+      bool all = true;
+      for (int cc = c - margin; cc <= c + margin && all; ++cc) {
+        all = cells_[static_cast<std::size_t>(r) * cols_ + cc] & 1;
+      }
+      across[static_cast<std::size_t>(r) * cols_ + c] = all;
+    }
+  }
   for (int r = margin; r < rows_ - margin; ++r) {
     for (int c = margin; c < cols_ - margin; ++c) {
       bool all = true;
       for (int rr = r - margin; rr <= r + margin && all; ++rr) {
-        for (int cc = c - margin; cc <= c + margin && all; ++cc) {
-          all = cells_[static_cast<std::size_t>(rr) * cols_ + cc] & 1;
-        }
+        all = across[static_cast<std::size_t>(rr) * cols_ + c];
       }
       if (all) cells_[static_cast<std::size_t>(r) * cols_ + c] |= 2;
     }
@@ -123,7 +132,8 @@ double VisibilityEvidence::unseenLineLength(const Pose2& field_T_robot,
   for (int k = 0; k < 4; ++k) {
     const double x = origin_.x() + (k & 1 ? cols_ : 0) * config_.raster_m;
     const double y = origin_.y() + (k & 2 ? rows_ : 0) * config_.raster_m;
-    const Eigen::Vector2d q(c_f * x - s_f * y + field_T_robot.x, s_f * x + c_f * y + field_T_robot.y);
+    const Eigen::Vector2d q(c_f * x - s_f * y + field_T_robot.x,
+                            s_f * x + c_f * y + field_T_robot.y);
     lo = lo.cwiseMin(q);
     hi = hi.cwiseMax(q);
   }

@@ -14,7 +14,7 @@ struct PoseSolverConfig {
   double sigma_along_m = 3.0;             ///< std dev along the lines of a parallel-only pose
   double sigma_unknown_m = 10.0;          ///< position std dev of a heading-only hypothesis
   double min_direction_angle_rad = 0.35;  ///< constraints closer in angle count as parallel
-  int max_pairs = 64;                     ///< constraint pairs combined per heading
+  int max_pairs = 144;                    ///< constraint pairs combined per heading
   double dominance_ratio = 3.0;  ///< a direction this much stronger than every other one also
                                  ///< yields parallel-only (1-D) candidates
 };

@@ -4,29 +4,6 @@
 #include <cmath>
 
 namespace houghloc {
-namespace {
-
-constexpr int kTopHatRows = 4;  // half window of the top-hat filter, rows (like the map's mask)
-
-/// Top-hat filter: each row minus the smallest count within +-kTopHatRows. Lines across the
-/// direction spread their points evenly over many rows and would lift every shift of the
-/// correlation alike (burying the peak of a short line under a long one); lines along it are
-/// narrow peaks and stay.
-std::vector<float> lineRowsOnly(const std::vector<float>& column) {
-  const int n = static_cast<int>(column.size());
-  std::vector<float> out(n, 0.0f);
-  for (int j = 0; j < n; ++j) {
-    if (column[j] <= 0.0f) continue;
-    float low = column[j];
-    for (int k = std::max(0, j - kTopHatRows); k <= std::min(n - 1, j + kTopHatRows); ++k) {
-      low = std::min(low, column[k]);
-    }
-    out[j] = column[j] - low;
-  }
-  return out;
-}
-
-}  // namespace
 
 std::vector<double> columnCorrelation(const std::vector<float>& sensor_column,
                                       const std::vector<float>& map_mask, int max_shift_rows) {
@@ -66,8 +43,7 @@ std::vector<TranslationConstraint> findTranslationConstraints(const WeightedPoin
   double sensor_range = step;
   for (const auto& p : sensor.points) sensor_range = std::max(sensor_range, p.norm());
   // Sensor column at theta_mu - theta_R: rho is measured along the rotated normal, no wrap needed.
-  const std::vector<float> column =
-      lineRowsOnly(houghColumn(sensor, theta_mu - theta_r, step, sensor_range));
+  const std::vector<float> column = houghColumn(sensor, theta_mu - theta_r, step, sensor_range);
   const std::vector<double> c = columnCorrelation(column, map.lineMask(direction), max_shift);
   const int n = static_cast<int>(c.size());
   if (n < 3) return out;

@@ -30,11 +30,12 @@ double CameraPoseCorrector::directionSigma(const GroundSegment& segment) const {
 }
 
 Pose3 CameraPoseCorrector::corrected(const Pose3& recorded) const {
-  return config_.enabled ? withCorrection(recorded, estimate_) : recorded;
+  return config_.enabled ? withCorrection(recorded, applied_) : recorded;
 }
 
 void CameraPoseCorrector::reset() {
   estimate_.setZero();
+  applied_.setZero();
   frames_.clear();
 }
 
@@ -125,6 +126,10 @@ bool CameraPoseCorrector::update(const std::vector<GroundSegment>& segments,
   }
   const double limit = config_.max_correction_rad;
   estimate_ = c.cwiseMax(-limit).cwiseMin(limit);
+  const bool enough = static_cast<int>(frames_.size()) >= config_.min_frames;
+  for (int k = 0; k < 2; ++k) {
+    applied_(k) = enough && std::abs(estimate_(k)) >= config_.min_applied_rad ? estimate_(k) : 0.0;
+  }
   return true;
 }
 

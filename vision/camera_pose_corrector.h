@@ -11,7 +11,8 @@
 namespace houghloc {
 
 struct CameraPoseCorrectionConfig {
-  bool enabled = false;               ///< off by default: see docs/vision.md for when it helps
+  bool enabled = false;               ///< off by default: on one exact-extrinsics recording it
+                                      ///< still estimated a wrong 0.4 deg pitch (docs/vision.md)
   double min_segment_length_m = 0.3;  ///< shorter segments give too noisy directions
   double max_segment_rms_m = 0.006;   ///< only clean straight fits constrain the tilt
   double min_point_sigma_m = 0.004;   ///< floor of the per-point noise used for a direction's sigma
@@ -26,6 +27,11 @@ struct CameraPoseCorrectionConfig {
                                       ///< the lines seen so far do not constrain
   double max_correction_rad = 0.07;   ///< |roll| and |pitch| corrections are clamped (4 deg)
   int iterations = 4;                 ///< Gauss-Newton steps per frame
+  int min_frames = 3;                 ///< frames with >= 2 segments needed before correcting
+  double min_applied_rad = 0.0044;    ///< a roll or pitch estimate below this (0.25 deg) is not
+                                      ///< applied: the line geometry of a few frames determines
+                                      ///< the tilt only to about 0.1 deg, and with an exact
+                                      ///< calibration applying such noise would cost accuracy
 };
 
 /// Online estimate of a roll and pitch error of the recorded camera pose (DESIGN §3 Pose3 angles)
@@ -48,8 +54,10 @@ class CameraPoseCorrector {
   /// with is fine) and re-solves; returns whether the window constrained the estimate.
   bool update(const std::vector<GroundSegment>& segments, const Pose3& recorded);
 
-  /// (roll, pitch) correction, rad.
-  const Eigen::Vector2d& correction() const { return estimate_; }
+  /// (roll, pitch) correction applied by corrected(), rad.
+  const Eigen::Vector2d& correction() const { return applied_; }
+  /// The estimate before the min_frames / min_applied_rad gates, rad.
+  const Eigen::Vector2d& estimate() const { return estimate_; }
   void reset();
 
  private:
@@ -70,6 +78,7 @@ class CameraPoseCorrector {
   CameraPoseCorrectionConfig config_;
   std::deque<Frame> frames_;
   Eigen::Vector2d estimate_ = Eigen::Vector2d::Zero();
+  Eigen::Vector2d applied_ = Eigen::Vector2d::Zero();
 };
 
 }  // namespace houghloc

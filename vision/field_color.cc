@@ -35,8 +35,8 @@ std::vector<Sample> collectSamples(const cv::Mat& bgr, const std::vector<int>& s
   return samples;
 }
 
-/// Peak of the 3x3-smoothed chromaticity histogram; green bins (g above r and b) win when they
-/// hold a fair share, since a robot close to the camera can outnumber the turf.
+/// Peak of the 3x3-smoothed chromaticity histogram; green bins (g clearly above r and b) win when
+/// they hold a fair share, since a robot close to the camera can outnumber the turf.
 cv::Point2f histogramPeak(const std::vector<Sample>& samples, int bins, double min_share) {
   std::vector<int> hist(static_cast<size_t>(bins * bins), 0);
   const auto bin = [bins](float x) { return std::clamp(static_cast<int>(x * bins), 0, bins - 1); };
@@ -52,7 +52,10 @@ cv::Point2f histogramPeak(const std::vector<Sample>& samples, int bins, double m
       }
       const float r = (ri + 0.5f) / bins, g = (gi + 0.5f) / bins;
       if (sum > best_any) best_any = sum, best_any_at = {ri, gi};
-      if (g > r && g > 1.f - r - g && sum > best_green) best_green = sum, best_green_at = {ri, gi};
+      // Clearly green: a grey wall with a faint green tint must not pass for turf.
+      constexpr float kGreenMargin = 0.04f;
+      if (g - std::max(r, 1.f - r - g) > kGreenMargin && sum > best_green)
+        best_green = sum, best_green_at = {ri, gi};
     }
   }
   const bool green_ok = best_green > 0 && best_green >= min_share * samples.size();

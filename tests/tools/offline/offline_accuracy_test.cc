@@ -62,7 +62,7 @@ class OfflineAccuracy : public ::testing::TestWithParam<std::string> {};
 TEST_P(OfflineAccuracy, FullRunMeetsTheTargetsAndIsReproducible) {
   const fs::path folder = kFixtures / GetParam();
   const fs::path out = outDir(GetParam() + "_full");
-  const RunResult r = run(folder.string() + " --quiet --overlay -o " + out.string());
+  const RunResult r = run(folder.string() + " --quiet -o " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::printf("%s\n", r.output.c_str());
 

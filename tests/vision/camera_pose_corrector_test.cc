@@ -1,0 +1,115 @@
+#include "vision/camera_pose_corrector.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "vision/camera_presets.h"
+#include "vision/line_width_model.h"
+
+namespace houghloc {
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+CameraPoseCorrectionConfig enabledConfig() {
+  CameraPoseCorrectionConfig config;
+  config.enabled = true;  // off by default
+  return config;
+}
+
+/// Segments of a field-line grid (lines every 1.5 m in both field directions, turned by
+/// `heading`) in front of the robot, as the corrector gets them: camera-frame end rays from the
+/// true camera pose, with the noise of a fitted segment on the ground.
+std::vector<GroundSegment> gridSegments(const Pose3& true_pose, double heading, std::mt19937* rng) {
+  std::normal_distribution<double> noise(0.0, 0.002);
+  const Eigen::Matrix3d camera_R_robot = true_pose.rotation().transpose();
+  const Eigen::Vector3d camera(true_pose.x, true_pose.y, true_pose.z);
+  const Eigen::Vector2d along(std::cos(heading), std::sin(heading));
+  const Eigen::Vector2d across(-along.y(), along.x());
+  std::vector<GroundSegment> segments;
+  for (int family = 0; family < 2; ++family) {
+    const Eigen::Vector2d d = family == 0 ? along : across, n = family == 0 ? across : along;
+    for (int k = -2; k <= 2; ++k) {
+      // The part of the line 1-4 m ahead.
+      const Eigen::Vector2d c = 2.5 * Eigen::Vector2d::UnitX() + (1.5 * k + 0.3) * n;
+      GroundSegment s;
+      s.a = c - 0.6 * d + noise(*rng) * n;
+      s.b = c + 0.6 * d + noise(*rng) * n;
+      if (s.a.x() < 1.0 || s.b.x() < 1.0) continue;
+      s.num_points = 30;
+      s.rms_m = 0.002;
+      s.ray_a_camera = camera_R_robot * (Eigen::Vector3d(s.a.x(), s.a.y(), 0.0) - camera);
+      s.ray_b_camera = camera_R_robot * (Eigen::Vector3d(s.b.x(), s.b.y(), 0.0) - camera);
+      segments.push_back(s);
+    }
+  }
+  return segments;
+}
+
+TEST(CameraPoseCorrector, RecoversAConstantPitchAndRollError) {
+  const Pose3 true_pose = cameraPreset("nao-top").robot_T_camera;
+  Pose3 recorded = true_pose;
+  recorded.roll += 1.0 * kDeg;
+  recorded.pitch += 2.0 * kDeg;
+  CameraPoseCorrector corrector(enabledConfig());
+  std::mt19937 rng(5);
+  for (int frame = 0; frame < 20; ++frame) {
+    corrector.update(gridSegments(true_pose, 0.3 + 0.05 * frame, &rng), recorded);
+  }
+  EXPECT_NEAR(corrector.correction().x(), -1.0 * kDeg, 0.05 * kDeg);
+  EXPECT_NEAR(corrector.correction().y(), -2.0 * kDeg, 0.05 * kDeg);
+  const Pose3 corrected = corrector.corrected(recorded);
+  EXPECT_NEAR(corrected.pitch, true_pose.pitch, 0.05 * kDeg);
+}
+
+TEST(CameraPoseCorrector, LeavesAnExactPoseAlone) {
+  const Pose3 true_pose = cameraPreset("nao-top").robot_T_camera;
+  CameraPoseCorrector corrector(enabledConfig());
+  std::mt19937 rng(6);
+  for (int frame = 0; frame < 20; ++frame) {
+    corrector.update(gridSegments(true_pose, -0.2 + 0.04 * frame, &rng), true_pose);
+    EXPECT_EQ(corrector.correction(), Eigen::Vector2d::Zero()) << frame;
+  }
+  EXPECT_LT(corrector.estimate().norm(), 0.1 * kDeg);
+}
+
+TEST(CameraPoseCorrector, WaitsForEnoughFramesAndIgnoresSingleLines) {
+  const Pose3 true_pose = cameraPreset("nao-top").robot_T_camera;
+  Pose3 recorded = true_pose;
+  recorded.pitch += 2.0 * kDeg;
+  CameraPoseCorrector corrector(enabledConfig());
+  std::mt19937 rng(7);
+  std::vector<GroundSegment> one = gridSegments(true_pose, 0.3, &rng);
+  one.resize(1);
+  for (int frame = 0; frame < 5; ++frame) EXPECT_FALSE(corrector.update(one, recorded));
+  corrector.update(gridSegments(true_pose, 0.3, &rng), recorded);
+  EXPECT_EQ(corrector.correction(), Eigen::Vector2d::Zero());  // one frame < min_frames
+}
+
+/// The interpolated width model against the camera model's exact widths, for every preset at
+/// its mount pose, including the steep NAO bottom camera whose horizon lies above the image.
+TEST(LineWidthModel, MatchesTheCameraModelForEveryPreset) {
+  for (const std::string& name : cameraPresetNames()) {
+    const CameraPreset preset = cameraPreset(name);
+    const CameraModel camera(preset.intrinsics, preset.robot_T_camera);
+    const LineWidthModel model(camera, 0.05);
+    double worst = 0.0;
+    for (int v = 0; v < camera.height(); v += 9) {
+      for (int u = 0; u < camera.width(); u += 17) {
+        const auto exact = camera.expectedLineWidthPx(u, v, 0.05);
+        const auto ground = camera.pixelToGround(u, v);
+        if (!exact || !ground || ground->norm() > 5.0 || exact->y() < 1.0) continue;
+        const Eigen::Vector2f m = model.expectedPx(static_cast<float>(u), static_cast<float>(v));
+        worst = std::max(
+            {worst, std::abs(m.x() / exact->x() - 1.0), std::abs(m.y() / exact->y() - 1.0)});
+      }
+    }
+    EXPECT_LT(worst, 0.08) << name;
+  }
+}
+
+}  // namespace
+}  // namespace houghloc
