@@ -1,5 +1,6 @@
 #include "localization/localizer.h"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,6 +32,29 @@ std::vector<GaussianPose> toGaussianPoses(const std::vector<PoseHypothesis>& hyp
     if (pose.isFinite()) out.push_back(pose);
   }
   return out;
+}
+
+/// Multiplies each pose's weight by floor + the density of `prior` (a Gaussian mixture, peak
+/// of each component scaled to its weight relative to the best) at the pose, with the pose's own
+/// covariance added. Mirror twins differ only here.
+void weightByPrior(const std::vector<GaussianPose>& prior, double floor,
+                   std::vector<GaussianPose>* poses) {
+  double best_weight = 0.0;
+  for (const GaussianPose& h : prior) best_weight = std::max(best_weight, h.weight);
+  if (!(best_weight > 0.0)) return;
+  for (GaussianPose& p : *poses) {
+    double density = 0.0;
+    for (const GaussianPose& h : prior) {
+      const Eigen::Matrix3d s = h.covariance + p.covariance;
+      const Eigen::Vector3d d = poseDifference(p.mean, h.mean);
+      const Eigen::LDLT<Eigen::Matrix3d> ldlt(s);
+      if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) continue;
+      const double chi2 = d.dot(ldlt.solve(d));
+      if (!std::isfinite(chi2)) continue;
+      density = std::max(density, h.weight / best_weight * std::exp(-0.5 * chi2));
+    }
+    p.weight *= std::max(0.0, floor) + density;
+  }
 }
 
 /// A camera close to the ground or tilted far from its upright pose: the robot has fallen.
@@ -91,7 +115,11 @@ LocalizationEstimate Localizer::process(std::int64_t t_us, const std::optional<P
   fallen_ = cameraSaysFallen(robot_T_cameras, config_);
   // Getting up turns and shifts the robot in ways its odometry does not follow, and the first
   // views may be ambiguous: ask the global localizer until it has seen enough.
-  if (was_fallen && !fallen_) global_frames_pending_ = config_.global_frames_after_fall;
+  if (was_fallen && !fallen_) {
+    global_frames_pending_ = config_.global_frames_after_fall;
+    fall_prior_.clear();
+    for (const TrackedHypothesis& h : tracker_.hypotheses()) fall_prior_.push_back(h.pose);
+  }
   const auto tracker_start = std::chrono::steady_clock::now();
   // A fallen robot's odometry is meaningless and its camera sees the sky or its own body: the
   // tracker is told that motion is unknown (its covariance grows) and gets no points.
@@ -109,7 +137,8 @@ LocalizationEstimate Localizer::process(std::int64_t t_us, const std::optional<P
     const std::vector<PoseHypothesis> found = global_->locate(usable_points);
     global_ms = millisecondsSince(global_start);
     global_ran = true;
-    const std::vector<GaussianPose> poses = toGaussianPoses(found, config_.max_injected_hypotheses);
+    std::vector<GaussianPose> poses = toGaussianPoses(found, config_.max_injected_hypotheses);
+    if (global_frames_pending_ > 0) weightByPrior(fall_prior_, config_.fall_prior_floor, &poses);
     if (!poses.empty()) {
       const auto inject_start = std::chrono::steady_clock::now();
       tracker_.injectHypotheses(poses);

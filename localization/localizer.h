@@ -32,6 +32,11 @@ struct LocalizerConfig {
   /// first views of a robot that just stood up are often local (one corner, parallel lines), so
   /// a wrong pose can fit them until the head turns.
   int global_frames_after_fall = 30;
+  /// Global poses found after getting up are weighted by how well the belief held before the fall
+  /// (inflated by the fall) explains them, plus this floor (a pose far outside that belief is
+  /// this much less likely than one at its centre). The field's mirror twins fit the points
+  /// equally well; where the robot fell tells which one it is. 0 would forbid large displacements.
+  double fall_prior_floor = 1e-3;
 };
 
 /// Status of an estimate (DESIGN §5.2 poses.csv, §7 pose_hypotheses_t).
@@ -104,7 +109,10 @@ class Localizer {
   HypothesisTracker tracker_;
   std::int64_t last_t_us_ = 0;
   bool fallen_ = false;
-  int global_frames_pending_ = 0;  ///< run the global localizer even if the tracker does not ask
+  int global_frames_pending_ = 0;
+  /// The tracker's hypotheses when the robot got up: the prior for the global poses after a fall.
+  std::vector<GaussianPose>
+      fall_prior_;  ///< run the global localizer even if the tracker does not ask
 };
 
 }  // namespace houghloc

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
+#include <string>
 
 #include "global_accuracy_fixture.h"
 
@@ -15,6 +17,11 @@ struct Case {
   std::string view;
   int frames;
 };
+
+// Readable test parameters in ctest output (instead of the struct's bytes).
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.field << "/" << c.view << ", " << c.frames << " frames";
+}
 
 class GlobalVsGrid : public ::testing::TestWithParam<Case> {};
 
