@@ -9,7 +9,7 @@
 namespace houghloc {
 namespace {
 
-constexpr int kPanelWidthPx = 300;
+constexpr int kPanelWidthPx = 340;  // fits the longest label at the legend font size
 constexpr double kFont = 0.5;
 const cv::Scalar kText(30, 30, 30);
 
@@ -56,7 +56,7 @@ cv::Mat appendLegend(const cv::Mat& plot, const std::vector<std::string>& notes)
     line_item(statusColour(status), 3, std::string("best pose: ") + status);
   }
   cv::circle(out, {x + 15, y - 5}, 4, statusColour("LOST"), 1, cv::LINE_AA);
-  label(out, "no pose (on truth, status colour)", {x + 40, y});
+  label(out, "no pose (ring on the truth)", {x + 40, y});
   y += step;
   cv::ellipse(out, cv::Point(x + 15, y - 5), cv::Size(14, 7), 0, 0, 360, statusColour("TRACKING"),
               2, cv::LINE_AA);

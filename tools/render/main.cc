@@ -1,4 +1,6 @@
 // houghloc-render: writes a synthetic recorded folder with ground truth (DESIGN §5.4).
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -115,15 +117,23 @@ int main(int argc, char** argv) {
     auto seconds = [&] {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
+    // A terminal gets one line redrawn in place; a log file gets a line every 10 %.
+    const bool terminal = isatty(fileno(stderr)) != 0;
     renderRecording(job, [&](int done, int total) {
-      if (!quiet && (done % 10 == 0 || done == total)) {
+      if (quiet) return;
+      const int log_every = std::max(1, total / 10);
+      if (terminal && (done % 10 == 0 || done == total)) {
         std::fprintf(stderr, "\rhoughloc-render: frame %d/%d (%.1f frames/s)", done, total,
+                     done / std::max(1e-9, seconds()));
+      } else if (!terminal && (done % log_every == 0 || done == total)) {
+        std::fprintf(stderr, "houghloc-render: frame %d/%d (%.1f frames/s)\n", done, total,
                      done / std::max(1e-9, seconds()));
       }
     });
     if (!quiet) {
-      std::fprintf(stderr, "\nhoughloc-render: wrote %d frames to %s in %.1f s (%.1f frames/s)\n",
-                   s.frames, out_dir.c_str(), seconds(), s.frames / std::max(1e-9, seconds()));
+      std::fprintf(stderr, "%shoughloc-render: wrote %d frames to %s in %.1f s (%.1f frames/s)\n",
+                   terminal ? "\n" : "", s.frames, out_dir.c_str(), seconds(),
+                   s.frames / std::max(1e-9, seconds()));
     }
   } catch (const std::exception& e) {
     std::cerr << "houghloc-render: " << e.what() << "\n";
