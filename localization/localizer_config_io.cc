@@ -139,7 +139,8 @@ ConfigSection trackerSection(TrackerConfig& c) {
 ConfigSection localizerSection(LocalizerConfig& c) {
   ConfigSection section;
   section.fields = {HL_MEMBER(c, max_injected_hypotheses), HL_MEMBER(c, fallen_camera_height_m),
-                    HL_MEMBER(c, fallen_tilt_rad), HL_MEMBER(c, global_frames_after_fall)};
+                    HL_MEMBER(c, fallen_tilt_rad), HL_MEMBER(c, global_frames_after_fall),
+                    HL_MEMBER(c, fall_prior_floor)};
   return section;
 }
 

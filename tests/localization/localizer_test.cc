@@ -150,7 +150,9 @@ TEST_F(LocalizerTest, FallThenRelocalises) {
     } else {
       e = run(f);
       EXPECT_FALSE(e.fallen);
-      if (k < fall) EXPECT_TRUE(correctPose(e.best()->mean, f.field_T_robot)) << k;
+      if (k < fall) {
+        EXPECT_TRUE(correctPose(e.best()->mean, f.field_T_robot)) << k;
+      }
       if (k >= up && recovered_at < 0 && estimateCorrect(e, f.field_T_robot)) recovered_at = k;
     }
     ASSERT_TRUE(estimateFinite(e)) << k;

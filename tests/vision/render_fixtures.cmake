@@ -10,18 +10,5 @@ set(fixtures
   "spl2019_nao-top_random|--standard spl2019 --camera nao-top --trajectory random-poses --seed 106"
   "spl_nao-top_pose-error|--scenario ${SCENARIO_DIR}/pose_error.yaml --seed 107"
   "spl_nao-top_exact|--standard spl --camera nao-top --trajectory walk --seed 107")
-foreach(fixture ${fixtures})
-  string(REPLACE "|" ";" parts "${fixture}")
-  list(GET parts 0 name)
-  list(GET parts 1 args)
-  separate_arguments(args UNIX_COMMAND "${args}")
-  if(NOT EXISTS ${OUT}/${name}/.complete)
-    file(REMOVE_RECURSE ${OUT}/${name})
-    execute_process(COMMAND ${RENDER} ${args} --frames 40 -q -o ${OUT}/${name}
-                    RESULT_VARIABLE result)
-    if(NOT result EQUAL 0)
-      message(FATAL_ERROR "rendering ${name} failed (${result})")
-    endif()
-    file(TOUCH ${OUT}/${name}/.complete)
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/RenderFixtureList.cmake)
+render_fixture_list(40 ${fixtures})

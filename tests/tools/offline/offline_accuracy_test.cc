@@ -3,18 +3,14 @@
 // --threads 2 reproducing a run exactly, and a folder with a corrupt image.
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
+
+#include "offline_cli_fixture.h"
 
 namespace houghloc {
 namespace {
-
-namespace fs = std::filesystem;
 
 // Issue 7: on frames with two directions in view, the hypotheses contain a pose correct up to
 // symmetry (0.10 m, 3 deg) in >= 90% of the frames and the best pose is in >= 80%.
@@ -23,36 +19,14 @@ constexpr double kMinBestCorrectRate = 0.80;
 
 const fs::path kFixtures = HOUGHLOC_OFFLINE_FIXTURES;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string output;
-};
-
-RunResult run(const std::string& args) {
-  const std::string command = std::string(HOUGHLOC_OFFLINE_EXE) + " " + args + " 2>&1";
-  RunResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::string firstLine(const fs::path& path) {
   const std::string text = readFile(path);
   return text.substr(0, text.find('\n'));
 }
 
 fs::path outDir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / ("offline_accuracy_" + name);
+  // In the build tree, so that runs from several build trees never share a folder.
+  const fs::path dir = fs::path(HOUGHLOC_OFFLINE_WORK) / name;
   fs::remove_all(dir);
   return dir;
 }

@@ -4,18 +4,5 @@
 set(fixtures
   "spl_nao-top_walk|--standard spl --camera nao-top --trajectory walk --seed 301"
   "kid_kid-wide_walk|--standard kid --camera kid-wide --trajectory walk --seed 302")
-foreach(fixture ${fixtures})
-  string(REPLACE "|" ";" parts "${fixture}")
-  list(GET parts 0 name)
-  list(GET parts 1 args)
-  separate_arguments(args UNIX_COMMAND "${args}")
-  if(NOT EXISTS ${OUT}/${name}/.complete)
-    file(REMOVE_RECURSE ${OUT}/${name})
-    execute_process(COMMAND ${RENDER} ${args} --frames 200 -q -o ${OUT}/${name}
-                    RESULT_VARIABLE result)
-    if(NOT result EQUAL 0)
-      message(FATAL_ERROR "rendering ${name} failed (${result})")
-    endif()
-    file(TOUCH ${OUT}/${name}/.complete)
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/../../../cmake/RenderFixtureList.cmake)
+render_fixture_list(200 ${fixtures})
