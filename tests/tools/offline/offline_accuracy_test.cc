@@ -93,7 +93,8 @@ TEST_P(OfflineAccuracy, GlobalOnlyRunIsScoredAndReevaluatedExactly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Renders, OfflineAccuracy,
-                         ::testing::Values("spl_nao-top_walk", "kid_kid-wide_walk"));
+                         ::testing::Values("spl_nao-top_walk", "kid_kid-wide_walk",
+                                           "spl_kid-wide_walk", "kid_nao-top_walk"));
 
 /// The first 40 frames of a rendered folder with one image replaced by garbage.
 TEST(OfflineCorruptImage, RunCompletesAndCountsTheFrame) {
