@@ -3,14 +3,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <map>
-#include <memory>
 #include <opencv2/imgcodecs.hpp>
-#include <stdexcept>
 
 #include "tools/offline/offline_output.h"
 #include "tools/offline/overlay.h"
 #include "tools/offline/vision_metrics.h"
+#include "tools/offline/vision_stage.h"
 #include "tools/recording/csv.h"
 
 namespace houghloc {
@@ -62,27 +60,17 @@ int runVisionOnly(const OfflineContext& context) {
   std::optional<VisionMetricsAccumulator> metrics;
   if (can_score) metrics.emplace(*context.field);
 
-  std::map<std::string, std::unique_ptr<VisionPipeline>> pipelines;  // per camera id
   RunStats stats;
   const int total = context.end_frame - context.first_frame;
-  for (int i = context.first_frame; i < context.end_frame; ++i) {
-    const FrameRecord& frame = rec.frames[static_cast<size_t>(i)];
-    std::string problem;
-    const std::optional<cv::Mat> image = loadFrameImage(context, frame, &problem);
-    if (!image) {
-      std::fprintf(stderr, "%swarning: %s\n", context.options.quiet ? "" : "\n", problem.c_str());
+  // Same loading and per-camera pipelines as the localization modes (tools/offline/vision_stage).
+  runVisionStage(context, context.options.threads, context.options.overlay, [&](VisionFrame& v) {
+    if (v.skipped) {
+      std::fprintf(stderr, "%swarning: %s\n", context.options.quiet ? "" : "\n", v.problem.c_str());
       ++stats.skipped;
-      continue;
+      return;
     }
-    auto& pipeline = pipelines[frame.camera_id];
-    const CameraIntrinsics& intrinsics = rec.intrinsicsFor(frame);
-    if (!pipeline) pipeline = std::make_unique<VisionPipeline>(intrinsics, context.vision_config);
-    VisionResult result;
-    try {
-      result = pipeline->process(*image, frame.robot_T_camera, frame.t_us);
-    } catch (const std::invalid_argument& e) {
-      throw std::runtime_error((fs::path(rec.folder) / frame.image).string() + ": " + e.what());
-    }
+    const FrameRecord& frame = *v.frame;
+    const VisionResult& result = v.result;
     ++stats.processed;
     stats.points += static_cast<long>(result.ground.points.size());
     stats.total_ms += result.diagnostics.time_total_ms;
@@ -98,18 +86,19 @@ int runVisionOnly(const OfflineContext& context) {
          timing_csv.format(static_cast<std::int64_t>(result.ground.points.size()))});
     if (metrics) {
       if (const auto truth = groundTruthAt(rec.ground_truth, frame.t_us)) {
-        const CameraModel camera(intrinsics, frame.robot_T_camera);
+        // Visibility is judged from the recorded pose, as the ground truth was rendered.
+        const CameraModel camera(*v.intrinsics, frame.robot_T_camera);
         metrics->addFrame(result.ground, *truth, visibleAt(rec.visible, frame.t_us), camera);
         ++stats.scored;
       }
     }
-    if (context.options.overlay) {
+    if (v.image) {
       const std::string name = fs::path(frame.image).stem().string() + ".png";
-      cv::imwrite((out / "overlay" / name).string(),
-                  drawVisionOverlay(*image, result, pipeline->camera()));
+      const CameraModel camera(*v.intrinsics, result.robot_T_camera_used);
+      cv::imwrite((out / "overlay" / name).string(), drawVisionOverlay(*v.image, result, camera));
     }
-    reportProgress(context, "vision", i - context.first_frame + 1, total);
-  }
+    reportProgress(context, "vision", v.index - context.first_frame + 1, total);
+  });
   points_csv.close();
   timing_csv.close();
   std::optional<VisionMetrics> summary;
