@@ -25,6 +25,9 @@ bool isStandardField(const std::string& name) {
   return false;
 }
 
+/// Not a single preset: nao-top and nao-bottom taking turns (RenderJob::rig).
+constexpr const char* kNaoBothCameras = "nao";
+
 bool isPreset(const std::string& name) {
   for (const std::string& n : cameraPresetNames()) {
     if (n == name) return true;
@@ -51,6 +54,18 @@ void resolveCamera(const std::string& camera_arg, const Scenario& s,
                    const std::string& scenario_file, RenderJob& job) {
   const std::string name = !camera_arg.empty() ? camera_arg : s.camera;
   if (name.empty()) throw std::runtime_error("no camera: give --camera PRESET|camera.yaml");
+  if (name == kNaoBothCameras) {
+    // A NAO reads its top and bottom camera in turn; the camera column tells them apart.
+    for (const char* id : {"nao-top", "nao-bottom"}) {
+      const CameraPreset preset = cameraPreset(id);
+      job.rig.push_back({id, preset.intrinsics, preset.robot_T_camera});
+    }
+    job.intrinsics = job.rig.front().intrinsics;
+    job.mount = job.rig.front().mount;
+    if (s.camera_mount)
+      throw std::runtime_error("camera_mount cannot be combined with --camera nao");
+    return;
+  }
   if (isPreset(name)) {
     const CameraPreset preset = cameraPreset(name);
     job.intrinsics = preset.intrinsics;
@@ -60,8 +75,8 @@ void resolveCamera(const std::string& camera_arg, const Scenario& s,
     if (!fs::exists(path)) {
       std::string known;
       for (const std::string& n : cameraPresetNames()) known += " " + n;
-      throw std::runtime_error("--camera: '" + name +
-                               "' is neither a preset nor a file (presets:" + known + ")");
+      throw std::runtime_error("--camera: '" + name + "' is neither a preset nor a file (presets:" +
+                               known + ", " + kNaoBothCameras + ")");
     }
     job.intrinsics = loadCameraYaml(path);
     job.mount = cameraPreset("nao-top").robot_T_camera;  // unless the scenario says otherwise
@@ -88,7 +103,8 @@ int main(int argc, char** argv) {
       app.add_option("--standard", standard, "standard field: spl, spl2019, kid, adult, msl");
   field_opt->excludes(standard_opt);
   app.add_option("--camera", camera,
-                 "preset (nao-top, nao-bottom, kid-wide, adult) or camera.yaml");
+                 "preset (nao-top, nao-bottom, kid-wide, adult), nao (top and bottom taking turns, "
+                 "as on the robot) or camera.yaml");
   auto* traj_opt = app.add_option("--trajectory", trajectory,
                                   "built-in: walk, spin, kidnap, fall, random-poses");
   auto* scen_opt =

@@ -36,7 +36,7 @@ FrameView makeView(const Pose2& field_T_robot, const Pose3& robot_T_camera) {
 }
 
 /// Image motion (px) of the image centre's scene point from t - exposure to t.
-Eigen::Vector2d centreMotion(const RenderJob& job, const Trajectory& trajectory,
+Eigen::Vector2d centreMotion(const RenderJob& job, const Pose3& mount, const Trajectory& trajectory,
                              const CameraModel& now, const Pose2& pose_now, double t) {
   const SensorConfig& sensor = job.scenario.sensor;
   if (!sensor.motion_blur || trajectory.independentFrames()) return Eigen::Vector2d::Zero();
@@ -50,7 +50,7 @@ Eigen::Vector2d centreMotion(const RenderJob& job, const Trajectory& trajectory,
   const Eigen::Vector2d p_field_xy = pose_now.transform(p_robot.head<2>());
   const double t0 = t - 1e-3 * sensor.exposure_time_ms;
   const RobotState before = trajectory.at(t0);
-  CameraModel then(now.intrinsics(), renderedCameraPose(job.mount, before, t0, job.scenario));
+  CameraModel then(now.intrinsics(), renderedCameraPose(mount, before, t0, job.scenario));
   const Eigen::Vector2d p_before = before.field_T_robot.inverse().transform(p_field_xy);
   const auto pixel = then.project(Eigen::Vector3d(p_before.x(), p_before.y(), p_robot.z()));
   if (!pixel) return Eigen::Vector2d::Zero();
@@ -76,6 +76,27 @@ std::vector<HintRecord> makeHints(const Scenario& s, const Trajectory& trajector
   return hints;
 }
 
+/// Per camera of the rig: what renders and records its frames.
+struct CameraResources {
+  RigCamera spec;
+  RayTable rays;
+  SensorModel sensor;
+  CameraModel camera;
+};
+
+std::vector<CameraResources> makeCameraResources(const RenderJob& job) {
+  std::vector<RigCamera> specs = job.rig;
+  if (specs.empty()) specs.push_back({"", job.intrinsics, job.mount});
+  std::vector<CameraResources> out;
+  for (const RigCamera& spec : specs) {
+    const SensorConfig& sensor = job.scenario.sensor;
+    out.push_back({spec, makeRayTable(spec.intrinsics, sensor.supersampling),
+                   SensorModel(sensor, spec.intrinsics.image_width, spec.intrinsics.image_height),
+                   CameraModel(spec.intrinsics, spec.mount)});
+  }
+  return out;
+}
+
 /// writeRecording() leaves out empty files; a rendered folder always has both truth files.
 void writeHeaderIfMissing(const std::filesystem::path& path, const char* header) {
   if (std::filesystem::exists(path)) return;
@@ -94,22 +115,25 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
 
   const Trajectory trajectory(sc, job.field);
   OdometryModel odometry(sc.odometry, sc.seed, sc.fps);
-  const RayTable rays = makeRayTable(job.intrinsics, sc.sensor.supersampling);
+  std::vector<CameraResources> cameras = makeCameraResources(job);
   const RoomBox box = makeRoomBox(job.field, sc.scene);
   const GroundShader ground(job.field, sc.scene, box, sc.seed);
   const RoomShader room(box, sc.scene, sc.seed);
-  const ImageRenderer renderer(rays, ground, room, box);
   SceneObjects statics = makeGoals(job.field, sc.scene);
   statics.append(makePeople(job.field, sc.scene, box, sc.seed));
   const MovingObjects movers(sc, job.field);
-  SensorModel sensor(sc.sensor, job.intrinsics.image_width, job.intrinsics.image_height);
   const VisibilityCounter visibility(job.field);
-  CameraModel camera(job.intrinsics, job.mount);
   std::mt19937 pose_noise(sc.seed * 19u + 1u);
   const double own_height = job.mount.z / 0.86;  // NAO: camera at 86% of the robot's height
 
   Recording rec;
-  rec.camera = job.intrinsics;
+  for (const CameraResources& c : cameras) {
+    if (c.spec.id.empty()) {
+      rec.camera = c.spec.intrinsics;
+    } else {
+      rec.cameras[c.spec.id] = c.spec.intrinsics;
+    }
+  }
   rec.field = job.field;
   RenderBuffers buffers;
   const bool png = sc.sensor.image_format == "png";
@@ -121,7 +145,9 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
     const double t = i / sc.fps;
     const std::int64_t t_us = toMicros(t);
     const RobotState state = trajectory.at(t);
-    const Pose3 cam_pose = renderedCameraPose(job.mount, state, t, sc);
+    CameraResources& rig = cameras[static_cast<size_t>(i) % cameras.size()];
+    CameraModel& camera = rig.camera;
+    const Pose3 cam_pose = renderedCameraPose(rig.spec.mount, state, t, sc);
     camera.setPose(cam_pose);
     const FrameView view = makeView(state.field_T_robot, cam_pose);
     SceneObjects objects = statics;
@@ -130,16 +156,18 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
       addOwnFeet(state.field_T_robot, own_height, M_PI * sc.trajectory.gait_frequency_hz * t,
                  state.walk_speed_mps > 0.01, objects);
     }
-    renderer.render(view, objects, buffers);
-    const Eigen::Vector2d motion = centreMotion(job, trajectory, camera, state.field_T_robot, t);
-    const cv::Mat3b image = sensor.apply(buffers.bgr, exposureAt(sc.sensor, t), motion,
-                                         static_cast<std::uint64_t>(sc.seed) * 1000003ull + i);
+    ImageRenderer(rig.rays, ground, room, box).render(view, objects, buffers);
+    const Eigen::Vector2d motion =
+        centreMotion(job, rig.spec.mount, trajectory, camera, state.field_T_robot, t);
+    const cv::Mat3b image = rig.sensor.apply(buffers.bgr, exposureAt(sc.sensor, t), motion,
+                                             static_cast<std::uint64_t>(sc.seed) * 1000003ull + i);
     char name[32];
     std::snprintf(name, sizeof(name), "images/%06d.%s", i, png ? "png" : "jpg");
     if (!cv::imwrite((out / name).string(), image, params)) {
       throw std::runtime_error((out / name).string() + ": cannot write image");
     }
-    const auto visible = visibility.count(t_us, state.field_T_robot, camera, view, rays, buffers);
+    const auto visible =
+        visibility.count(t_us, state.field_T_robot, camera, view, rig.rays, buffers);
     rec.visible.insert(rec.visible.end(), visible.begin(), visible.end());
     if (i > 0) odometry.update(trajectory.walkedMotion(t_prev, t));
     t_prev = t;
@@ -147,6 +175,7 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
     frame.image = name;
     frame.t_us = t_us;
     frame.odometry = odometry.pose();
+    frame.camera_id = rig.spec.id;
     frame.robot_T_camera = recordedCameraPose(cam_pose, sc.camera_pose_error, pose_noise);
     rec.frames.push_back(frame);
     rec.ground_truth.push_back({t_us, state.field_T_robot});

@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "field_models/field_model.h"
 #include "field_models/pose3.h"
@@ -10,12 +11,23 @@
 
 namespace houghloc {
 
+/// One camera of a multi-camera robot, e.g. a NAO's top or bottom camera.
+struct RigCamera {
+  std::string id;  ///< frames.csv camera column and cameras/<id>.yaml
+  CameraIntrinsics intrinsics;
+  Pose3 mount;  ///< robot_T_camera of the standing robot with the head centred
+};
+
 /// Everything one render run needs; the command line fills it from the scenario and options.
 struct RenderJob {
   Scenario scenario;
   FieldModel field;
   CameraIntrinsics intrinsics;
   Pose3 mount;  ///< robot_T_camera of the standing robot with the head centred
+  /// Several cameras taking turns, as a NAO reads its top and bottom camera alternately: frame
+  /// i is taken by rig[i % rig.size()]. Empty: the single camera above (camera.yaml, no camera
+  /// column). The first rig camera should equal intrinsics/mount (the robot's height uses it).
+  std::vector<RigCamera> rig;
   std::string out_dir;
 };
 

@@ -163,6 +163,25 @@ TEST_P(RenderOutputTest, MapLinesLandOnWhiteAndTurfIsGreen) {
   EXPECT_GE(green, 0.995 * turf) << green << " of " << turf << ", first miss: " << first_failure;
 }
 
+TEST_P(RenderOutputTest, RigCamerasTakeTurnsAndEachHasItsFile) {
+  if (job_.rig.empty()) {
+    EXPECT_TRUE(rec_.camera.has_value());
+    for (const FrameRecord& frame : rec_.frames) EXPECT_EQ(frame.camera_id, "");
+    return;
+  }
+  ASSERT_EQ(rec_.cameras.size(), job_.rig.size());
+  for (size_t i = 0; i < rec_.frames.size(); ++i) {
+    const FrameRecord& frame = rec_.frames[i];
+    const RigCamera& expected = job_.rig[i % job_.rig.size()];
+    EXPECT_EQ(frame.camera_id, expected.id);
+    const cv::Mat image = cv::imread(job_.out_dir + "/" + frame.image);
+    EXPECT_EQ(image.cols, expected.intrinsics.image_width);
+    EXPECT_EQ(image.rows, expected.intrinsics.image_height);
+    // The recorded pose is the camera's own mount turned by the head, not the other camera's.
+    EXPECT_NEAR(frame.robot_T_camera.pitch, expected.mount.pitch, 0.2) << i;
+  }
+}
+
 TEST_P(RenderOutputTest, VisibleCsvMatchesTheProjectedMap) {
   const FieldModel& field = job_.field;
   const std::vector<LineSample> samples = lineSamples(field, 0.01);
@@ -193,7 +212,7 @@ TEST_P(RenderOutputTest, VisibleCsvMatchesTheProjectedMap) {
 INSTANTIATE_TEST_SUITE_P(FieldsAndCameras, RenderOutputTest,
                          ::testing::Values(Case{"spl", "nao-top"}, Case{"spl", "nao-bottom", true},
                                            Case{"kid", "kid-wide"}, Case{"adult", "adult"},
-                                           Case{"msl", "nao-top"}),
+                                           Case{"msl", "nao-top"}, Case{"spl", "nao"}),
                          [](const auto& info) {
                            std::string n = info.param.field + "_" + info.param.camera;
                            for (char& c : n) c = (c == '-') ? '_' : c;

@@ -10,11 +10,18 @@
 namespace houghloc {
 
 /// A render job for a standard field and camera preset into a fresh folder of the build tree.
+/// camera "nao": the NAO's top and bottom camera taking turns (RenderJob::rig).
 inline RenderJob testJob(const std::string& field, const std::string& camera,
                          const std::string& folder) {
   RenderJob job;
   job.field = makeStandardField(field);
-  const CameraPreset preset = cameraPreset(camera);
+  if (camera == "nao") {
+    for (const char* id : {"nao-top", "nao-bottom"}) {
+      const CameraPreset preset = cameraPreset(id);
+      job.rig.push_back({id, preset.intrinsics, preset.robot_T_camera});
+    }
+  }
+  const CameraPreset preset = cameraPreset(camera == "nao" ? "nao-top" : camera);
   job.intrinsics = preset.intrinsics;
   job.mount = preset.robot_T_camera;
   job.out_dir = std::string(HOUGHLOC_BINARY_DIR) + "/test_renders/" + folder;
