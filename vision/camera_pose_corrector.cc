@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vision/circle_fit.h"
+
 namespace houghloc {
 namespace {
 
@@ -24,7 +26,10 @@ double wrapQuarter(double angle) {
 
 double CameraPoseCorrector::directionSigma(const GroundSegment& segment) const {
   // Least-squares line through n points spread over length L: sigma_angle ~ sigma sqrt(12 / n) / L.
-  const double sigma = std::max(segment.rms_m, config_.min_point_sigma_m);
+  // The point noise floor grows with range like a pixel's footprint on the ground.
+  const double range_2m = 0.25 * (segment.a + segment.b).norm();  // midpoint, in units of 2 m
+  const double floor = config_.min_point_sigma_m * (1.0 + range_2m * range_2m);
+  const double sigma = std::max(segment.rms_m, floor);
   return sigma * std::sqrt(12.0 / std::max(2, segment.num_points)) /
          std::max(0.1, segment.length());
 }
@@ -36,55 +41,148 @@ Pose3 CameraPoseCorrector::corrected(const Pose3& recorded) const {
 void CameraPoseCorrector::reset() {
   estimate_.setZero();
   applied_.setZero();
+  sigma_.setConstant(std::numeric_limits<double>::infinity());
   frames_.clear();
 }
 
-Eigen::VectorXd CameraPoseCorrector::residuals(const Eigen::Vector2d& c,
-                                               std::vector<double>* weights) const {
+void CameraPoseCorrector::arcResiduals(const ArcObservation& arc, const Pose3& pose,
+                                       std::vector<double>* out) const {
   GroundProjectionConfig unlimited;
   unlimited.max_range_m = 1e9;
   unlimited.min_depression_rad = 0.0;
-  const bool compute_weights = weights->empty();
-  std::vector<double> out;
+  std::vector<Eigen::Vector2d> points;
+  for (const Eigen::Vector3d& ray : arc.rays) {
+    if (const auto p = rayToGround(ray, pose, unlimited)) points.push_back(*p);
+  }
+  Eigen::Vector2d center;
+  const bool ok = points.size() == arc.rays.size() &&
+                  fitCircleFixedRadius(points, config_.circle_radius_m, &center);
+  for (size_t i = 0; i < arc.rays.size(); ++i) {
+    out->push_back(ok ? (points[i] - center).norm() - config_.circle_radius_m : std::nan(""));
+  }
+}
+
+void CameraPoseCorrector::frameResiduals(const Frame& frame, const Eigen::Vector2d& c,
+                                         std::vector<double>* out,
+                                         std::vector<double>* gates) const {
+  GroundProjectionConfig unlimited;
+  unlimited.max_range_m = 1e9;
+  unlimited.min_depression_rad = 0.0;
+  const Pose3 pose = withCorrection(frame.recorded, c);
   std::vector<double> angles;
-  size_t index = 0;
-  for (const Frame& frame : frames_) {
-    const Pose3 pose = withCorrection(frame.recorded, c);
-    angles.clear();
-    double cos_sum = 0.0, sin_sum = 0.0;
-    for (const Observation& o : frame.observations) {
-      const auto a = rayToGround(o.ray_a, pose, unlimited);
-      const auto b = rayToGround(o.ray_b, pose, unlimited);
-      const double angle = a && b ? std::atan2(b->y() - a->y(), b->x() - a->x()) : std::nan("");
-      angles.push_back(angle);
-      if (!std::isfinite(angle)) continue;
-      // Field directions repeat every 90 deg: average 4 x angle on the circle.
-      const double w = 1.0 / (o.sigma_rad * o.sigma_rad);
-      cos_sum += w * std::cos(4.0 * angle);
-      sin_sum += w * std::sin(4.0 * angle);
-    }
-    const double heading = 0.25 * std::atan2(sin_sum, cos_sum);
-    for (size_t i = 0; i < angles.size(); ++i, ++index) {
-      const double r = wrapQuarter(angles[i] - heading);
-      const double whitened = std::isfinite(r) ? r / frame.observations[i].sigma_rad : 0.0;
-      if (compute_weights) {
-        const double k = config_.huber_sigmas;
-        const bool gated = !std::isfinite(r) || std::abs(r) > config_.max_residual_rad;
-        weights->push_back(
-            gated ? 0.0 : (std::abs(whitened) <= k ? 1.0 : std::sqrt(k / std::abs(whitened))));
-      }
-      out.push_back((*weights)[index] * whitened);
+  double cos_sum = 0.0, sin_sum = 0.0;
+  for (const Observation& o : frame.observations) {
+    const auto a = rayToGround(o.ray_a, pose, unlimited);
+    const auto b = rayToGround(o.ray_b, pose, unlimited);
+    const double angle = a && b ? std::atan2(b->y() - a->y(), b->x() - a->x()) : std::nan("");
+    angles.push_back(angle);
+    if (!std::isfinite(angle)) continue;
+    // Field directions repeat every 90 deg: average 4 x angle on the circle.
+    const double w = 1.0 / (o.sigma_rad * o.sigma_rad);
+    cos_sum += w * std::cos(4.0 * angle);
+    sin_sum += w * std::sin(4.0 * angle);
+  }
+  const double heading = 0.25 * std::atan2(sin_sum, cos_sum);
+  for (size_t i = 0; i < angles.size(); ++i) {
+    const double sigma = frame.observations[i].sigma_rad;
+    out->push_back(wrapQuarter(angles[i] - heading) / sigma);
+    if (gates) gates->push_back(config_.max_residual_rad / sigma);
+  }
+  std::vector<double> arc_raw;
+  for (const ArcObservation& arc : frame.arcs) {
+    arc_raw.clear();
+    arcResiduals(arc, pose, &arc_raw);
+    for (double r : arc_raw) {
+      out->push_back(r / arc.sigma_m);
+      if (gates) gates->push_back(config_.max_circle_residual_m / arc.sigma_m);
     }
   }
-  return Eigen::Map<const Eigen::VectorXd>(out.data(), static_cast<long>(out.size()));
+}
+
+void CameraPoseCorrector::linearize(Frame* frame, const Eigen::Vector2d& c) const {
+  std::vector<double> r0, gates;
+  frameResiduals(*frame, c, &r0, &gates);
+  const long n = static_cast<long>(r0.size());
+  frame->r = Eigen::Map<const Eigen::VectorXd>(r0.data(), n);
+  frame->gate = Eigen::Map<const Eigen::VectorXd>(gates.data(), n);
+  frame->jacobian.resize(n, 2);
+  constexpr double kStep = 1e-5;
+  for (int k = 0; k < 2; ++k) {
+    Eigen::Vector2d dc = Eigen::Vector2d::Zero();
+    dc(k) = kStep;
+    std::vector<double> r1;
+    frameResiduals(*frame, c + dc, &r1, nullptr);
+    frame->jacobian.col(k) = (Eigen::Map<const Eigen::VectorXd>(r1.data(), n) - frame->r) / kStep;
+  }
+  frame->at = c;
+}
+
+bool CameraPoseCorrector::solve() {
+  // The prior keeps directions the lines seen so far do not constrain at 0.
+  const double prior = 1.0 / (config_.prior_sigma_rad * config_.prior_sigma_rad);
+  Eigen::Vector2d c = estimate_;
+  Eigen::Matrix2d information = Eigen::Matrix2d::Zero();
+  double chi2 = 0.0;
+  long residual_count = 0;
+  // Re-linearise the frames the estimate moved away from, solve on the linear model, repeat
+  // while the solution moves (only while converging from a large error).
+  for (int pass = 0; pass < 3; ++pass) {
+    for (Frame& frame : frames_) {
+      if (!((c - frame.at).cwiseAbs().maxCoeff() <= config_.relinearize_rad)) linearize(&frame, c);
+    }
+    const Eigen::Vector2d start = c;
+    for (int it = 0; it <= config_.iterations; ++it) {
+      information.setZero();
+      Eigen::Vector2d g = Eigen::Vector2d::Zero();
+      chi2 = 0.0;
+      residual_count = 0;
+      for (const Frame& frame : frames_) {
+        const Eigen::Vector2d dc = c - frame.at;
+        for (long i = 0; i < frame.r.size(); ++i) {
+          const Eigen::RowVector2d j = frame.jacobian.row(i);
+          const double r = frame.r(i) + j.dot(dc);
+          if (!std::isfinite(r) || !j.allFinite() || std::abs(r) > frame.gate(i)) continue;
+          // Huber as IRLS: weight = min(1, k / |r|) on the squared residual.
+          const double w = std::min(1.0, config_.huber_sigmas / std::abs(r));
+          information += w * j.transpose() * j;
+          g += w * j.transpose() * r;
+          chi2 += w * r * r;
+          ++residual_count;
+        }
+      }
+      if (it == config_.iterations) break;  // the last round only measures the information
+      const Eigen::Matrix2d h = information + prior * Eigen::Matrix2d::Identity();
+      const Eigen::Vector2d step = -h.ldlt().solve(g + prior * c);
+      if (!step.allFinite()) return false;
+      c += step;
+      if (step.norm() < 1e-8) it = config_.iterations - 1;  // converged: measure, then stop
+    }
+    if ((c - start).cwiseAbs().maxCoeff() <= config_.relinearize_rad) break;
+  }
+  const double limit = config_.max_correction_rad;
+  estimate_ = c.cwiseMax(-limit).cwiseMin(limit);
+  // Covariance of the estimate; each frame's heading is a nuisance parameter, and sigmas from
+  // a few spots' rms may be too small, so the residual chi^2 per degree of freedom scales it up.
+  long nuisance = 2;  // roll, pitch; plus each frame's heading and each arc's centre
+  for (const Frame& f : frames_) {
+    nuisance += (f.observations.empty() ? 0 : 1) + 2 * static_cast<long>(f.arcs.size());
+  }
+  const long dof = residual_count - nuisance;
+  const double scale = dof > 0 ? std::max(1.0, chi2 / static_cast<double>(dof)) : 1e6;
+  const Eigen::Matrix2d covariance =
+      scale * (information + prior * Eigen::Matrix2d::Identity()).inverse();
+  sigma_ = covariance.diagonal().cwiseSqrt();
+  return true;
 }
 
 bool CameraPoseCorrector::update(const std::vector<GroundSegment>& segments,
+                                 const std::vector<CircleCandidate>& circles,
                                  const Pose3& recorded) {
   if (!config_.enabled) return false;
   std::vector<const GroundSegment*> used;
   for (const GroundSegment& s : segments) {
-    if (s.length() >= config_.min_segment_length_m && s.rms_m <= config_.max_segment_rms_m) {
+    if (s.length() >= config_.min_segment_length_m && s.rms_m <= config_.max_segment_rms_m &&
+        s.num_points >= config_.min_segment_points) {
       used.push_back(&s);
     }
   }
@@ -93,42 +191,31 @@ bool CameraPoseCorrector::update(const std::vector<GroundSegment>& segments,
   });
   used.resize(
       std::min(used.size(), static_cast<size_t>(std::max(0, config_.max_segments_per_frame))));
+  Frame frame;
+  frame.recorded = recorded;
   // A frame with one direction and one segment says nothing (its heading absorbs it).
   if (used.size() >= 2) {
-    Frame frame{recorded, {}};
     for (const GroundSegment* s : used) {
       frame.observations.push_back({s->ray_a_camera, s->ray_b_camera, directionSigma(*s)});
     }
-    frames_.push_back(std::move(frame));
   }
+  if (config_.use_circles && config_.circle_radius_m > 0.0) {
+    for (const CircleCandidate& circle : circles) {
+      if (circle.rays_camera.size() < 8) continue;
+      const double range_2m = 0.5 * circle.center.norm();
+      frame.arcs.push_back(
+          {circle.rays_camera, config_.min_point_sigma_m * (1.0 + range_2m * range_2m)});
+    }
+  }
+  if (!frame.observations.empty() || !frame.arcs.empty()) frames_.push_back(std::move(frame));
   while (static_cast<int>(frames_.size()) > std::max(1, config_.window_frames)) frames_.pop_front();
   if (frames_.empty()) return false;
 
-  // Gauss-Newton with IRLS weights fixed per step; the prior keeps unobserved directions at 0.
-  const double prior = 1.0 / (config_.prior_sigma_rad * config_.prior_sigma_rad);
-  Eigen::Vector2d c = estimate_;
-  for (int it = 0; it < config_.iterations; ++it) {
-    std::vector<double> weights;
-    const Eigen::VectorXd r0 = residuals(c, &weights);
-    Eigen::MatrixXd jacobian(r0.size(), 2);
-    constexpr double kStep = 1e-5;
-    for (int k = 0; k < 2; ++k) {
-      Eigen::Vector2d dc = Eigen::Vector2d::Zero();
-      dc(k) = kStep;
-      jacobian.col(k) = (residuals(c + dc, &weights) - r0) / kStep;
-    }
-    const Eigen::Matrix2d h = jacobian.transpose() * jacobian + prior * Eigen::Matrix2d::Identity();
-    const Eigen::Vector2d g = jacobian.transpose() * r0 + prior * c;
-    const Eigen::Vector2d step = -h.ldlt().solve(g);
-    if (!step.allFinite()) return false;
-    c += step;
-    if (step.norm() < 1e-7) break;
-  }
-  const double limit = config_.max_correction_rad;
-  estimate_ = c.cwiseMax(-limit).cwiseMin(limit);
+  if (!solve()) return false;
   const bool enough = static_cast<int>(frames_.size()) >= config_.min_frames;
   for (int k = 0; k < 2; ++k) {
-    applied_(k) = enough && std::abs(estimate_(k)) >= config_.min_applied_rad ? estimate_(k) : 0.0;
+    const bool significant = std::abs(estimate_(k)) >= config_.significance_sigmas * sigma_(k);
+    applied_(k) = enough && significant ? estimate_(k) : 0.0;
   }
   return true;
 }

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <deque>
+#include <limits>
 #include <vector>
 
 #include "field_models/pose3.h"
@@ -11,27 +12,42 @@
 namespace houghloc {
 
 struct CameraPoseCorrectionConfig {
-  bool enabled = false;               ///< off by default: on one exact-extrinsics recording it
-                                      ///< still estimated a wrong 0.4 deg pitch (docs/vision.md)
-  double min_segment_length_m = 0.3;  ///< shorter segments give too noisy directions
-  double max_segment_rms_m = 0.006;   ///< only clean straight fits constrain the tilt
-  double min_point_sigma_m = 0.004;   ///< floor of the per-point noise used for a direction's sigma
-  int max_segments_per_frame = 12;    ///< the longest ones are kept (bounds the solver's cost)
-  int window_frames = 60;             ///< frames whose segments are kept: the error is a constant
-                                      ///< bias, so old frames still count (and a changed one is
-                                      ///< followed within this many frames)
-  double max_residual_rad = 0.35;     ///< segments further than this (20 deg) from their frame's
-                                      ///< two field directions are no straight field lines
-  double huber_sigmas = 3.0;          ///< residuals beyond this many sigmas count linearly
-  double prior_sigma_rad = 0.05;      ///< weak pull toward no correction (3 deg), for directions
-                                      ///< the lines seen so far do not constrain
-  double max_correction_rad = 0.07;   ///< |roll| and |pitch| corrections are clamped (4 deg)
-  int iterations = 4;                 ///< Gauss-Newton steps per frame
-  int min_frames = 3;                 ///< frames with >= 2 segments needed before correcting
-  double min_applied_rad = 0.0044;    ///< a roll or pitch estimate below this (0.25 deg) is not
-                                      ///< applied: the line geometry of a few frames determines
-                                      ///< the tilt only to about 0.1 deg, and with an exact
-                                      ///< calibration applying such noise would cost accuracy
+  bool enabled = true;                  ///< harmless on exact extrinsics (significance gate below)
+  double min_segment_length_m = 0.5;    ///< shorter segments give too noisy directions, and a
+                                        ///< 0.5 m chord of the 0.75 m centre circle bends 4 cm,
+                                        ///< so no circle piece passes the rms limit
+  double max_segment_rms_m = 0.006;     ///< only clean straight fits constrain the tilt
+  int min_segment_points = 8;           ///< fewer spots give no trustworthy rms (a 4-spot far
+                                        ///< segment 2.5 deg off once moved the estimate 0.5 deg)
+  double min_point_sigma_m = 0.004;     ///< floor of the per-point noise used for a direction's
+                                        ///< sigma, at the camera; grows as (1 + (range / 2 m)^2),
+                                        ///< like a pixel's ground footprint
+  int max_segments_per_frame = 12;      ///< the longest ones are kept (bounds the solver's cost)
+  int window_frames = 120;              ///< frames whose segments are kept: the error is a constant
+                                        ///< bias, so old frames still count (and a changed one is
+                                        ///< followed within this many frames)
+  double max_residual_rad = 0.35;       ///< segments further than this (20 deg) from their frame's
+                                        ///< two field directions are no straight field lines
+  double huber_sigmas = 3.0;            ///< residuals beyond this many sigmas count linearly
+  double prior_sigma_rad = 0.05;        ///< weak pull toward no correction (3 deg), for directions
+                                        ///< the lines seen so far do not constrain
+  double max_correction_rad = 0.07;     ///< |roll| and |pitch| corrections are clamped (4 deg)
+  int iterations = 8;                   ///< Gauss-Newton steps per frame (on the linearised
+                                        ///< residuals: cheap)
+  double relinearize_rad = 3e-4;        ///< a frame's residuals are re-linearised once the
+                                        ///< estimate moved this far from where they were (the
+                                        ///< tilt's effect is smooth; keeps the cost per frame low)
+  int min_frames = 3;                   ///< frames with >= 2 segments needed before correcting
+  bool use_circles = true;              ///< centre-circle arcs must fit a circle of the map's
+                                        ///< radius: a strong pitch (scale) and roll (skew) cue
+  double circle_radius_m = 0.0;         ///< set by VisionPipeline from the segments' circle radius
+                                        ///< (the map); 0 = arcs unused
+  double max_circle_residual_m = 0.05;  ///< arc points further off the fitted circle are gated
+  double significance_sigmas = 4.0;     ///< a roll or pitch estimate is applied only when it is
+                                        ///< this many of its standard deviations (from the fit's
+                                        ///< information, scaled by the residual chi^2 when that
+                                        ///< exceeds 1) away from 0: with an exact calibration the
+                                        ///< line geometry of a few frames must not move the pose
 };
 
 /// Online estimate of a roll and pitch error of the recorded camera pose (DESIGN §3 Pose3 angles)
@@ -50,14 +66,21 @@ class CameraPoseCorrector {
   /// The recorded pose with the current correction added.
   Pose3 corrected(const Pose3& recorded) const;
 
-  /// Adds one frame's segments (their rays are in the camera frame, so any pose they were fitted
-  /// with is fine) and re-solves; returns whether the window constrained the estimate.
-  bool update(const std::vector<GroundSegment>& segments, const Pose3& recorded);
+  /// Adds one frame's segments and centre-circle arcs (their rays are in the camera frame, so
+  /// any pose they were fitted with is fine) and re-solves; returns whether the window
+  /// constrained the estimate.
+  bool update(const std::vector<GroundSegment>& segments,
+              const std::vector<CircleCandidate>& circles, const Pose3& recorded);
+  bool update(const std::vector<GroundSegment>& segments, const Pose3& recorded) {
+    return update(segments, {}, recorded);
+  }
 
   /// (roll, pitch) correction applied by corrected(), rad.
   const Eigen::Vector2d& correction() const { return applied_; }
-  /// The estimate before the min_frames / min_applied_rad gates, rad.
+  /// The estimate before the min_frames / significance gates, rad.
   const Eigen::Vector2d& estimate() const { return estimate_; }
+  /// Standard deviation of estimate() (roll, pitch), rad; infinite before the first solve.
+  const Eigen::Vector2d& estimateSigma() const { return sigma_; }
   void reset();
 
  private:
@@ -65,20 +88,38 @@ class CameraPoseCorrector {
     Eigen::Vector3d ray_a, ray_b;  ///< camera frame
     double sigma_rad = 0.0;        ///< direction sigma on the ground
   };
+  struct ArcObservation {
+    std::vector<Eigen::Vector3d> rays;  ///< camera frame
+    double sigma_m = 0.0;               ///< point noise on the ground
+  };
   struct Frame {
     Pose3 recorded;
     std::vector<Observation> observations;
+    std::vector<ArcObservation> arcs;
+    /// Whitened residuals r (NaN: unusable) and their Jacobian at correction `at`; gates in
+    /// sigmas. The solver uses r + J (c - at).
+    Eigen::Vector2d at = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
+    Eigen::VectorXd r, gate;
+    Eigen::Matrix<double, Eigen::Dynamic, 2> jacobian;
   };
 
   double directionSigma(const GroundSegment& segment) const;
-  /// Whitened, Huber-weighted residuals of every observation for correction c (zero for gated
-  /// ones); `weights` (IRLS, from the residuals at c) are used when given, else computed.
-  Eigen::VectorXd residuals(const Eigen::Vector2d& c, std::vector<double>* weights) const;
+  /// Whitened residuals of one frame's observations for correction c (NaN when unusable) and,
+  /// when given, each one's gate in sigmas.
+  void frameResiduals(const Frame& frame, const Eigen::Vector2d& c, std::vector<double>* out,
+                      std::vector<double>* gates) const;
+  /// Appends the raw residuals (m, NaN when unusable) of one arc's points to its fixed-radius
+  /// circle under `pose`.
+  void arcResiduals(const ArcObservation& arc, const Pose3& pose, std::vector<double>* out) const;
+  void linearize(Frame* frame, const Eigen::Vector2d& c) const;
+  /// IRLS Gauss-Newton on the linearised frames from estimate_; false on a numerical breakdown.
+  bool solve();
 
   CameraPoseCorrectionConfig config_;
   std::deque<Frame> frames_;
   Eigen::Vector2d estimate_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d applied_ = Eigen::Vector2d::Zero();
+  Eigen::Vector2d sigma_ = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
 };
 
 }  // namespace houghloc

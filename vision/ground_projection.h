@@ -21,6 +21,10 @@ struct GroundProjectionConfig {
   double weight_range_m = 4.0;       ///< weight = 1 / (1 + (range / this)^2): far points are
                                      ///< less accurate
   int region_columns = 16;           ///< image columns sampled for the visible-region polygon
+  double min_boundary_gap_m = 0.45;  ///< spots nearer than this to the field boundary's ground
+                                     ///< point in their column are dropped (boundary_gap.h): the
+                                     ///< goal frame's back bar lies 0.2-0.4 m from the carpet's
+                                     ///< end, the outer lines 0.7-1 m
 };
 
 /// A spot's viewing ray in the camera body frame. Computed once (undistortion is the expensive

@@ -174,6 +174,11 @@ LineFeatures fitLineFeatures(const std::vector<SpotRay>& rays, const Pose3& robo
       if (config.circle_radius_m > 0.0 &&
           std::abs(circle.radius_m - config.circle_radius_m) <=
               config.circle_radius_tolerance * config.circle_radius_m) {
+        const size_t n = points.size(),
+                     keep = std::min(n, static_cast<size_t>(std::max(2, config.max_circle_rays)));
+        for (size_t k = 0; k < keep; ++k) {
+          circle.rays_camera.push_back(points[k * (n - 1) / (keep - 1)].ray->ray_camera);
+        }
         features.circles.push_back(circle);
       }
     }

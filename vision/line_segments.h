@@ -21,6 +21,7 @@ struct LineSegmentConfig {
   double max_arc_radius_m = 3.0;          ///< bent chains a circle this small fits are arcs
   double circle_radius_tolerance = 0.15;  ///< relative radius deviation accepted
   double circle_max_rms_m = 0.03;         ///< circle-fit residual limit
+  int max_circle_rays = 24;               ///< rays kept per circle candidate (pose correction)
 };
 
 /// A straight piece of field line on the ground (robot frame), fitted to linked spots.
@@ -41,6 +42,9 @@ struct CircleCandidate {
   double radius_m = 0.0;
   double rms_m = 0.0;
   int num_points = 0;
+  /// Camera-frame rays of up to max_circle_rays of its spots, evenly along the arc, so the
+  /// arc can be re-projected with a corrected camera tilt (CameraPoseCorrector).
+  std::vector<Eigen::Vector3d> rays_camera;
 };
 
 struct LineFeatures {

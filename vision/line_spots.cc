@@ -24,6 +24,7 @@ class SpotScanner {
       : color_(color), widths_(widths), config_(config), spots_(spots), stats_(stats) {
     threshold_ =
         static_cast<int>(std::max(config.min_contrast, config.noise_contrast * color.luma_sigma));
+    dark_luma_ = static_cast<int>(config.dark_luma_ratio * color.luma_median);
   }
 
   void scan(const Scanline& line) const {
@@ -78,8 +79,10 @@ class SpotScanner {
     for (int k = 0; k < count; ++k) {
       const int idx = from + dir * k;
       if (idx < 0 || idx >= line.n) return false;
-      if (color_.isField(line.at(idx))) return true;
+      // Dark first: the chromaticity of dark pixels is noisy, so a robot's black joints or
+      // shorts next to its white arm can pass for turf.
       if (line.luma(idx) < dark_luma_) return false;
+      if (color_.isField(line.at(idx))) return true;
     }
     return false;
   }

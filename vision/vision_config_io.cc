@@ -39,7 +39,7 @@ ConfigSection visionSection(VisionConfig& c) {
       {"projection",
        {{HL_MEMBER(c.projection, max_range_m), HL_MEMBER(c.projection, min_depression_rad),
          HL_MEMBER(c.projection, thin_cell_m), HL_MEMBER(c.projection, weight_range_m),
-         HL_MEMBER(c.projection, region_columns)}}},
+         HL_MEMBER(c.projection, region_columns), HL_MEMBER(c.projection, min_boundary_gap_m)}}},
       {"segments",
        {{HL_MEMBER(c.segments, enabled), HL_MEMBER(c.segments, link_slope),
          HL_MEMBER(c.segments, link_gap_px), HL_MEMBER(c.segments, link_tolerance_px),
@@ -50,13 +50,17 @@ ConfigSection visionSection(VisionConfig& c) {
       {"pose_correction",
        {{HL_MEMBER(c.pose_correction, enabled), HL_MEMBER(c.pose_correction, min_segment_length_m),
          HL_MEMBER(c.pose_correction, max_segment_rms_m),
+         HL_MEMBER(c.pose_correction, min_segment_points),
          HL_MEMBER(c.pose_correction, min_point_sigma_m),
          HL_MEMBER(c.pose_correction, max_segments_per_frame),
          HL_MEMBER(c.pose_correction, window_frames),
          HL_MEMBER(c.pose_correction, max_residual_rad), HL_MEMBER(c.pose_correction, huber_sigmas),
          HL_MEMBER(c.pose_correction, prior_sigma_rad),
          HL_MEMBER(c.pose_correction, max_correction_rad), HL_MEMBER(c.pose_correction, iterations),
-         HL_MEMBER(c.pose_correction, min_frames), HL_MEMBER(c.pose_correction, min_applied_rad)}}},
+         HL_MEMBER(c.pose_correction, relinearize_rad), HL_MEMBER(c.pose_correction, min_frames),
+         HL_MEMBER(c.pose_correction, use_circles),
+         HL_MEMBER(c.pose_correction, max_circle_residual_m),
+         HL_MEMBER(c.pose_correction, significance_sigmas)}}},
   };
   return section;
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "vision/boundary_gap.h"
 #include "vision/image_conversion.h"
 
 namespace houghloc {
@@ -24,6 +25,12 @@ bool samePose(const Pose3& a, const Pose3& b) {
          a.yaw == b.yaw;
 }
 
+CameraPoseCorrectionConfig correctorConfig(const VisionConfig& config) {
+  CameraPoseCorrectionConfig out = config.pose_correction;
+  out.circle_radius_m = config.segments.circle_radius_m;  // the map's centre circle
+  return out;
+}
+
 }  // namespace
 
 VisionPipeline::VisionPipeline(const CameraIntrinsics& intrinsics, const VisionConfig& config,
@@ -31,7 +38,7 @@ VisionPipeline::VisionPipeline(const CameraIntrinsics& intrinsics, const VisionC
     : config_(config),
       camera_id_(camera_id),
       camera_(intrinsics, Pose3{}),
-      corrector_(config.pose_correction) {}
+      corrector_(correctorConfig(config)) {}
 
 VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_camera,
                                      std::int64_t t_us) {
@@ -70,14 +77,16 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   diag.time_spots_ms = msSince(&step);
 
   // 5. Undistort only the spots; 6. segments, circles and the pitch/roll correction, which
-  // then applies to this frame's projection already.
-  const std::vector<SpotRay> rays = spotRays(camera_, result.spots);
+  // then applies to this frame's projection already. The corrector sees all spots: the goal
+  // frame's bars dropped below are parallel or perpendicular to the lines anyway, and with a
+  // wrong tilt the boundary gap would be measured wrongly.
+  const std::vector<SpotRay> all_rays = spotRays(camera_, result.spots);
   diag.time_project_ms = msSince(&step);
-  result.features = fitLineFeatures(rays, pose, config_.projection, config_.segments);
-  diag.pose_correction_updated = corrector_.update(result.features.segments, robot_T_camera);
+  result.features = fitLineFeatures(all_rays, pose, config_.projection, config_.segments);
+  diag.pose_correction_updated =
+      corrector_.update(result.features.segments, result.features.circles, robot_T_camera);
   const Pose3 refined = corrector_.corrected(robot_T_camera);
   if (!samePose(refined, pose)) {
-    result.features = fitLineFeatures(rays, refined, config_.projection, config_.segments);
     result.robot_T_camera_used = refined;
     // The horizon and the visible region follow only noticeable changes (setPose recomputes
     // the horizon per column); the points below use the refined pose exactly.
@@ -85,6 +94,12 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
       camera_.setPose(refined);
       result.horizon_rows = camera_.horizonRows();
     }
+  }
+  const std::vector<SpotRay> rays =
+      dropSpotsNearBoundary(all_rays, camera_, result.boundary, start_rows,
+                            config_.projection.min_boundary_gap_m, &diag.dropped_near_boundary);
+  if (diag.dropped_near_boundary > 0 || !samePose(refined, pose)) {
+    result.features = fitLineFeatures(rays, refined, config_.projection, config_.segments);
   }
   diag.pose_correction_rad = {refined.roll - robot_T_camera.roll,
                               refined.pitch - robot_T_camera.pitch};

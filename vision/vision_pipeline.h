@@ -39,6 +39,7 @@ struct VisionDiagnostics {
   LineSpotStats spot_stats;
   ProjectionStats projection_stats;
   int num_spots = 0;
+  int dropped_near_boundary = 0;  ///< spots within min_boundary_gap_m of the field boundary
   bool pose_correction_updated = false;
   Eigen::Vector2d pose_correction_rad = Eigen::Vector2d::Zero();  ///< (roll, pitch) applied
   double time_total_ms = 0.0;

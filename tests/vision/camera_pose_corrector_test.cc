@@ -16,7 +16,7 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 CameraPoseCorrectionConfig enabledConfig() {
   CameraPoseCorrectionConfig config;
-  config.enabled = true;  // off by default
+  config.enabled = true;  // the default; explicit because these tests are about it
   return config;
 }
 
@@ -74,6 +74,40 @@ TEST(CameraPoseCorrector, LeavesAnExactPoseAlone) {
     EXPECT_EQ(corrector.correction(), Eigen::Vector2d::Zero()) << frame;
   }
   EXPECT_LT(corrector.estimate().norm(), 0.1 * kDeg);
+}
+
+/// The centre circle (radius 0.75 m) centred at `center` (robot frame) as one arc candidate:
+/// camera-frame rays of 24 points on its near half, from the true camera pose.
+CircleCandidate circleArc(const Pose3& true_pose, const Eigen::Vector2d& center) {
+  const Eigen::Matrix3d camera_R_robot = true_pose.rotation().transpose();
+  const Eigen::Vector3d camera(true_pose.x, true_pose.y, true_pose.z);
+  CircleCandidate arc;
+  arc.center = center;
+  arc.radius_m = 0.75;
+  for (int i = 0; i < 24; ++i) {
+    const double a = 0.5 * M_PI + M_PI * i / 23.0;  // the half facing the robot
+    const Eigen::Vector2d p = center + 0.75 * Eigen::Vector2d(std::cos(a), std::sin(a));
+    arc.rays_camera.push_back(camera_R_robot * (Eigen::Vector3d(p.x(), p.y(), 0.0) - camera));
+  }
+  return arc;
+}
+
+TEST(CameraPoseCorrector, RecoversTheTiltFromCentreCircleArcsAlone) {
+  const Pose3 true_pose = cameraPreset("nao-top").robot_T_camera;
+  Pose3 recorded = true_pose;
+  recorded.roll += 1.0 * kDeg;
+  recorded.pitch += 2.0 * kDeg;
+  CameraPoseCorrectionConfig config = enabledConfig();
+  config.circle_radius_m = 0.75;
+  CameraPoseCorrector corrector(config);
+  for (int frame = 0; frame < 8; ++frame) {
+    corrector.update({}, {circleArc(true_pose, {2.0, -0.6 + 0.15 * frame})}, recorded);
+  }
+  EXPECT_NEAR(corrector.correction().x(), -1.0 * kDeg, 0.02 * kDeg);
+  EXPECT_NEAR(corrector.correction().y(), -2.0 * kDeg, 0.02 * kDeg);
+  // Without the map's radius the arcs are not used.
+  CameraPoseCorrector no_radius(enabledConfig());
+  EXPECT_FALSE(no_radius.update({}, {circleArc(true_pose, {2.0, 0.0})}, recorded));
 }
 
 TEST(CameraPoseCorrector, WaitsForEnoughFramesAndIgnoresSingleLines) {

@@ -45,14 +45,26 @@ void MonteCarloLocalizer::reset(const Pose2& pose, double sigma_m, double sigma_
                    pose.theta + sigma_rad * n(rng_));
   }
   estimate_ = pose;
+  covariance_ =
+      Eigen::Vector3d(sigma_m * sigma_m, sigma_m * sigma_m, sigma_rad * sigma_rad).asDiagonal();
+}
+
+void MonteCarloLocalizer::resetUniform() {
+  particles_.assign(config_.num_particles, Particle{});
+  for (Particle& p : particles_) p.pose = randomPose();
+  estimate_ = Pose2();
+  covariance_ = Eigen::Vector3d(field_.halfLength() * field_.halfLength(),
+                                field_.halfWidth() * field_.halfWidth(), M_PI * M_PI)
+                    .asDiagonal();
 }
 
 void MonteCarloLocalizer::update(const Pose2& motion, const GroundPoints& points) {
   std::normal_distribution<double> n(0.0, 1.0);
   const double trans = std::hypot(motion.x, motion.y), rot = std::abs(motion.theta);
-  const double st = config_.trans_noise_per_m * trans + config_.min_trans_noise_m;
-  const double sr =
-      config_.rot_noise_per_rad * rot + config_.rot_noise_per_m * trans + config_.min_rot_noise_rad;
+  const double st = std::sqrt(config_.trans_var_per_m * trans + config_.trans_var_per_rad * rot) +
+                    config_.min_trans_noise_m;
+  const double sr = std::sqrt(config_.rot_var_per_rad * rot + config_.rot_var_per_m * trans) +
+                    config_.min_rot_noise_rad;
   const double scale =
       points.empty() ? 0.0 : config_.likelihood_points / static_cast<double>(points.size());
   double max_log = -1e300, mean_likelihood = 0.0;
@@ -86,9 +98,7 @@ void MonteCarloLocalizer::update(const Pose2& motion, const GroundPoints& points
   for (size_t i = 0; i < particles_.size(); ++i) {
     weights_[i] = std::exp(particles_[i].log_weight - max_log);
   }
-  size_t best = 0;
-  for (size_t i = 0; i < weights_.size(); ++i) best = weights_[i] > weights_[best] ? i : best;
-  computeEstimate(particles_[best].pose);
+  computeEstimate(heaviestClusterCentre());
   resample(inject);
 }
 
@@ -115,11 +125,38 @@ void MonteCarloLocalizer::resample(double inject_share) {
   particles_ = std::move(next);
 }
 
+bool MonteCarloLocalizer::inCluster(const Pose2& p, const Pose2& centre) const {
+  return std::hypot(p.x - centre.x, p.y - centre.y) <= config_.cluster_radius_m &&
+         std::abs(angleDifference(p.theta, centre.theta)) <= config_.cluster_heading_rad;
+}
+
+Pose2 MonteCarloLocalizer::heaviestClusterCentre() const {
+  std::vector<size_t> order(particles_.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const size_t k = std::min(order.size(), static_cast<size_t>(config_.cluster_candidates));
+  std::partial_sort(order.begin(), order.begin() + k, order.end(),
+                    [&](size_t a, size_t b) { return weights_[a] > weights_[b]; });
+  Pose2 centre = particles_[order[0]].pose;
+  double heaviest = -1.0;
+  for (size_t c = 0; c < k; ++c) {
+    const Pose2& candidate = particles_[order[c]].pose;
+    double mass = 0.0;
+    for (size_t i = 0; i < particles_.size(); ++i) {
+      if (inCluster(particles_[i].pose, candidate)) mass += weights_[i];
+    }
+    if (mass > heaviest) {
+      heaviest = mass;
+      centre = candidate;
+    }
+  }
+  return centre;
+}
+
 void MonteCarloLocalizer::computeEstimate(const Pose2& centre) {
   double sw = 0.0, sx = 0.0, sy = 0.0, sc = 0.0, ss = 0.0;
   for (size_t i = 0; i < particles_.size(); ++i) {
     const Pose2& p = particles_[i].pose;
-    if (std::hypot(p.x - centre.x, p.y - centre.y) > config_.cluster_radius_m) continue;
+    if (!inCluster(p, centre)) continue;
     const double w = weights_[i];
     sw += w;
     sx += w * p.x;
@@ -127,7 +164,18 @@ void MonteCarloLocalizer::computeEstimate(const Pose2& centre) {
     sc += w * std::cos(p.theta);
     ss += w * std::sin(p.theta);
   }
-  if (sw > 0.0) estimate_ = Pose2(sx / sw, sy / sw, std::atan2(ss, sc));
+  if (!(sw > 0.0)) return;
+  estimate_ = Pose2(sx / sw, sy / sw, std::atan2(ss, sc));
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (size_t i = 0; i < particles_.size(); ++i) {
+    const Pose2& p = particles_[i].pose;
+    if (!inCluster(p, centre)) continue;
+    const Eigen::Vector3d d(p.x - estimate_.x, p.y - estimate_.y,
+                            angleDifference(p.theta, estimate_.theta));
+    cov += (weights_[i] / sw) * d * d.transpose();
+  }
+  // A floor keeps the covariance positive definite when the cluster is a single particle.
+  covariance_ = cov + Eigen::Vector3d(1e-6, 1e-6, 1e-6).asDiagonal().toDenseMatrix();
 }
 
 }  // namespace houghloc::bench

@@ -1,20 +1,26 @@
 // houghloc-bench-tracking: one HypothesisTracker update (300 points, 4 hypotheses) against a
 // reference Monte Carlo localization (500 particles) fed the same points and odometry, plus both
-// accuracies on the same synthetic walk, so the time ratio is stated at a known accuracy.
-//   houghloc-bench-tracking [--field=spl] [--frames=900] [--seed=11] [benchmark flags]
+// accuracies on the same synthetic walk and on rendered recordings, so the time ratio is stated
+// at a known accuracy.
+//   houghloc-bench-tracking [--field=spl] [--frames=900] [--seed=11] [--recording=DIR[,DIR]]...
+//                           [benchmark flags]
+// --recording: a recorded folder (DESIGN §5.1) with ground truth; repeatable or a comma list.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
+#include <exception>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "field_models/distance_grid.h"
 #include "field_models/standard_fields.h"
 #include "localization/hypothesis_tracker.h"
 #include "tests/localization/tracking_scenario.h"
 #include "tools/bench/mcl_baseline.h"
+#include "tools/bench/tracking_recording.h"
 
 namespace houghloc::bench {
 namespace {
@@ -23,6 +29,7 @@ struct Options {
   std::string field = "spl";
   int frames = 900;
   std::uint32_t seed = 11;
+  std::vector<std::string> recordings;
 };
 
 GaussianPose gaussian(const Pose2& pose, double sigma_m, double sigma_rad) {
@@ -54,12 +61,6 @@ struct RunStats {
   }
 };
 
-/// Thread CPU time, us: the machines are shared, so wall time would measure the neighbours.
-double cpuNowUs() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return 1e6 * static_cast<double>(t.tv_sec) + 1e-3 * static_cast<double>(t.tv_nsec);
-}
 /// Both methods on the same synthetic walk (10% odometry noise, 5% slip, 10% outliers), both
 /// started from the same start hint (10 cm / 3 deg off).
 void compareOnTrajectory(const Options& options) {
@@ -161,6 +162,12 @@ Options parseOptions(int argc, char** argv) {
     if (a.rfind("--field=", 0) == 0) o.field = a.substr(8);
     if (a.rfind("--frames=", 0) == 0) o.frames = std::max(2, std::stoi(a.substr(9)));
     if (a.rfind("--seed=", 0) == 0) o.seed = static_cast<std::uint32_t>(std::stoul(a.substr(7)));
+    if (a.rfind("--recording=", 0) == 0) {
+      std::stringstream list(a.substr(12));
+      for (std::string dir; std::getline(list, dir, ',');) {
+        if (!dir.empty()) o.recordings.push_back(dir);
+      }
+    }
   }
   return o;
 }
@@ -170,7 +177,16 @@ Options parseOptions(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);  // removes its own --benchmark_* flags
-  houghloc::bench::compareOnTrajectory(houghloc::bench::parseOptions(argc, argv));
+  const auto options = houghloc::bench::parseOptions(argc, argv);
+  houghloc::bench::compareOnTrajectory(options);
+  for (const std::string& dir : options.recordings) {
+    try {
+      houghloc::bench::compareOnRecording(dir, options.seed);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "houghloc-bench-tracking: %s\n", e.what());
+      return 1;
+    }
+  }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

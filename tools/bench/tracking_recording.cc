@@ -1,0 +1,102 @@
+#include "tools/bench/tracking_recording.h"
+
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+
+#include "field_models/distance_grid.h"
+#include "localization/localizer.h"
+#include "tools/bench/mcl_baseline.h"
+#include "tools/offline/localization_run.h"
+#include "tools/offline/vision_stage.h"
+
+namespace houghloc::bench {
+
+double cpuNowUs() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return 1e6 * static_cast<double>(t.tv_sec) + 1e-3 * static_cast<double>(t.tv_nsec);
+}
+
+RecordedRun loadRecordedRun(const std::string& dir) {
+  OfflineOptions options;
+  options.folder = dir;
+  options.quiet = true;
+  options.out_dir = (std::filesystem::temp_directory_path() / "houghloc-bench-tracking").string();
+  RecordedRun run{loadOfflineContext(options), {}, 0.0};
+  requireField(run.context);
+  run.points.reserve(run.context.end_frame - run.context.first_frame);
+  runVisionStage(run.context, 1, false, [&](VisionFrame& v) {
+    run.points.push_back(std::move(v.result.ground));
+    run.mean_points += static_cast<double>(run.points.back().size());
+  });
+  if (!run.points.empty()) run.mean_points /= static_cast<double>(run.points.size());
+  return run;
+}
+
+RunOutput runLocalizer(const RecordedRun& run) {
+  const OfflineContext& context = run.context;
+  Localizer localizer(*context.field, context.localizer_config);
+  RunOutput out;
+  size_t next_hint = 0;
+  for (size_t k = 0; k < run.points.size(); ++k) {
+    const FrameRecord& frame = context.recording.frames[context.first_frame + k];
+    // As mode_full.cc: hints up to this frame's time, then the frame; the hint is timed too.
+    const double t0 = cpuNowUs();
+    while (next_hint < context.hints.size() && context.hints[next_hint].t_us <= frame.t_us) {
+      localizer.applyHint(context.hints[next_hint++]);
+    }
+    const LocalizationEstimate estimate =
+        localizer.process(frame.t_us, frame.odometry, {frame.robot_T_camera}, run.points[k]);
+    out.cpu_us.push_back(cpuNowUs() - t0);
+    FrameEstimate e;
+    e.t_us = frame.t_us;
+    e.status = trackerStatusName(estimate.status);
+    for (const EstimateHypothesis& h : estimate.hypotheses) e.hypotheses.push_back(h.pose);
+    out.estimates.push_back(std::move(e));
+  }
+  return out;
+}
+
+RunOutput runMcl(const RecordedRun& run, std::uint32_t seed) {
+  const OfflineContext& context = run.context;
+  const DistanceGrid grid(*context.field);
+  MonteCarloLocalizer mcl(*context.field, grid, MclConfig{}, seed);
+  RunOutput out;
+  size_t next_hint = 0;
+  bool started = false;  // a hint or the uniform start has placed the particles
+  for (size_t k = 0; k < run.points.size(); ++k) {
+    const int index = context.first_frame + static_cast<int>(k);
+    const FrameRecord& frame = context.recording.frames[index];
+    const double t0 = cpuNowUs();
+    while (next_hint < context.hints.size() && context.hints[next_hint].t_us <= frame.t_us) {
+      const LocalizationHint& hint = context.hints[next_hint++];
+      if (hint.kind != HintKind::kResetTo || hint.poses.empty()) continue;
+      const Eigen::Matrix3d& cov = hint.poses.front().covariance;
+      mcl.reset(hint.poses.front().mean, std::sqrt(0.5 * (cov(0, 0) + cov(1, 1))),
+                std::sqrt(cov(2, 2)));
+      started = true;
+    }
+    if (!started) {  // no start hint: a global start from particles all over the field
+      mcl.resetUniform();
+      started = true;
+    }
+    // Robot-frame motion since the previous frame; none on the first one.
+    const Pose2 motion =
+        k == 0 ? Pose2() : context.recording.frames[index - 1].odometry.inverse() * frame.odometry;
+    mcl.update(motion, run.points[k]);
+    out.cpu_us.push_back(cpuNowUs() - t0);
+    FrameEstimate e;
+    e.t_us = frame.t_us;
+    e.status = "TRACKING";
+    GaussianPose g;
+    g.mean = mcl.estimate();
+    g.covariance = mcl.covariance();
+    g.weight = 1.0;
+    e.hypotheses.push_back(g);
+    out.estimates.push_back(std::move(e));
+  }
+  return out;
+}
+
+}  // namespace houghloc::bench
