@@ -26,6 +26,33 @@ DistanceGrid::DistanceGrid(const FieldModel& field, const DistanceGridConfig& co
           static_cast<float>(std::min(d, config.max_distance_m));
     }
   }
+  buildBlockMinima();
+}
+
+void DistanceGrid::buildBlockMinima() {
+  const int cells_x = cols_ - 1, cells_y = rows_ - 1;
+  if (cells_x <= 0 || cells_y <= 0) return;
+  half_diagonal_ = 0.5 * std::sqrt(2.0) * config_.resolution_m * (1.0 + 1e-9) +
+                   1e-6 * std::max(1.0, config_.max_distance_m);
+  const int size = 1 << kBlockShift;
+  block_cols_ = (cells_x + size - 1) / size;
+  const int block_rows = (cells_y + size - 1) / size;
+  block_min_.assign(static_cast<size_t>(block_cols_) * block_rows, 0);
+  for (int br = 0; br < block_rows; ++br) {
+    for (int bc = 0; bc < block_cols_; ++bc) {
+      // Nodes of every cell in the block, including the far edge.
+      float low = values_[static_cast<size_t>(br * size) * cols_ + bc * size];
+      for (int r = br * size; r <= std::min(rows_ - 1, (br + 1) * size); ++r) {
+        for (int c = bc * size; c <= std::min(cols_ - 1, (bc + 1) * size); ++c)
+          low = std::min(low, node(c, r));
+      }
+      // Round down, and make sure the lookup's own product never exceeds the node value.
+      int units = static_cast<int>(std::min(255.0, std::floor(low / kBlockUnitM)));
+      while (units > 0 && kBlockUnitM * units > low) --units;
+      block_min_[static_cast<size_t>(br) * block_cols_ + bc] =
+          static_cast<std::uint8_t>(std::max(0, units));
+    }
+  }
 }
 
 double DistanceGrid::distance(const Eigen::Vector2d& p_field, Eigen::Vector2d* gradient) const {

@@ -27,6 +27,14 @@ bool carpetInterval(const Eigen::Vector2d& t0, const Eigen::Vector2d& u, double 
   return *s_min <= *s_max;
 }
 
+// 1-D candidates closer than this in heading and across the lines are the same line.
+constexpr double kSameLineRad = 0.03;
+constexpr double kSameLineM = 0.06;
+// A frame whose best full pose has less than this many times min_observed_weight across its
+// weakest direction counts as parallel-only when a 1-D hypothesis scores about as well (a few
+// outliers or a line's end make a pose observable).
+constexpr double kParallelOnlyObserved = 3.0;
+
 }  // namespace
 
 std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
@@ -39,11 +47,11 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
   // in convergeCandidates).
   RefinementConfig fine = config_.refinement;
   fine.iterations = 3;
-  RefinementResult r = refinePose(points, h.field_T_robot, map_.features(), fine, frozen);
+  RefinementResult r = refinePose(points, h.field_T_robot, map_, fine, frozen);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(r.information.topLeftCorner<2, 2>());
   const bool observed = eig.eigenvalues()(0) >= config_.min_observed_weight;
   if (observed && was_parallel) {
-    r = refinePose(points, r.field_T_robot, map_.features(), config_.refinement);
+    r = refinePose(points, r.field_T_robot, map_, config_.refinement);
   }
   if (!observed && *line_scans >= config_.max_line_scans) return {};
   h.field_T_robot = r.field_T_robot;
@@ -126,7 +134,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
   const Eigen::Vector2d t = t0 + 0.5 * (begin + end) * u;
   PoseHypothesis h = candidate;
   const RefinementResult r =
-      refinePose(points, Pose2(t.x(), t.y(), theta), map_.features(), config_.refinement, u);
+      refinePose(points, Pose2(t.x(), t.y(), theta), map_, config_.refinement, u);
   h.field_T_robot = r.field_T_robot;
   const double along = 0.25 * (end - begin + 2.0 * step) + 0.3;
   const Eigen::Matrix2d p = Eigen::Matrix2d::Identity() - u * u.transpose();
@@ -143,6 +151,63 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
   h.score = std::max(h.score, stretches.front().top);
   for (const Stretch& st : stretches) h.score = std::max(h.score, st.top);
   return {h};
+}
+
+bool GlobalHoughLocalizer::parallelOnlyFrame(const std::vector<PoseHypothesis>& refined,
+                                             const WeightedPoints& points) const {
+  const PoseHypothesis* best_full = nullptr;
+  double best_parallel = -1e300;
+  for (const PoseHypothesis& h : refined) {
+    if (h.kind == HypothesisKind::kParallel) best_parallel = std::max(best_parallel, h.score);
+    if (h.kind == HypothesisKind::kFull && (best_full == nullptr || h.score > best_full->score)) {
+      best_full = &h;
+    }
+  }
+  if (best_parallel == -1e300) return false;
+  if (best_full == nullptr || best_full->score <= best_parallel) return true;
+  if (best_parallel < config_.parallel_only_share * best_full->score) return false;
+  // A full pose about as good as the best 1-D one: a second direction is in view only if clearly
+  // more than the few points that made it observable lie across the lines.
+  RefinementConfig none = config_.refinement;
+  none.iterations = 0;
+  const RefinementResult r = refinePose(points, best_full->field_T_robot, map_, none);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(r.information.topLeftCorner<2, 2>());
+  return eig.eigenvalues()(0) < kParallelOnlyObserved * config_.min_observed_weight;
+}
+
+std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
+    const std::vector<PoseHypothesis>& lines, const WeightedPoints& points,
+    const VisibilityEvidence& evidence) const {
+  const bool symmetric = map_.pointSymmetric();
+  auto sameLine = [](const PoseHypothesis& a, const Pose2& b) {
+    const Eigen::Vector2d d = b.translation() - a.field_T_robot.translation();
+    const Eigen::Vector2d& u = a.line_direction;
+    return std::abs(angleDifference(a.field_T_robot.theta, b.theta)) < kSameLineRad &&
+           std::abs(d.x() * u.y() - d.y() * u.x()) < kSameLineM;
+  };
+  std::vector<PoseHypothesis> scanned, out;
+  for (const PoseHypothesis& line : lines) {
+    bool done = false;
+    for (const PoseHypothesis& s : scanned) {
+      const Pose2& p = line.field_T_robot;
+      done =
+          done || sameLine(s, p) || (symmetric && sameLine(s, Pose2(-p.x, -p.y, p.theta + M_PI)));
+    }
+    if (done) continue;
+    scanned.push_back(line);
+    for (const PoseHypothesis& h : placeAlongLines(line, points, evidence)) {
+      out.push_back(h);
+      if (!symmetric) continue;
+      PoseHypothesis twin = h;  // the map is point-symmetric: the twin scores the same
+      const Pose2& p = h.field_T_robot;
+      twin.field_T_robot = Pose2(-p.x, -p.y, p.theta + M_PI);
+      twin.line_direction = -h.line_direction;
+      twin.covariance.topRightCorner<2, 1>() *= -1.0;
+      twin.covariance.bottomLeftCorner<1, 2>() *= -1.0;
+      out.push_back(twin);
+    }
+  }
+  return out;
 }
 
 void GlobalHoughLocalizer::finish(PoseHypothesis& h, const WeightedPoints& points,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "field_models/field_distance.h"
 
@@ -14,11 +15,16 @@ FeatureLookup::FeatureLookup(const FieldModel& field, double resolution_m, doubl
   for (const Segment2& s : field.segments) lines_.push_back({s.a, s.direction(), s.length()});
   cols_ = static_cast<int>(std::ceil(2.0 * hx / resolution_m));
   rows_ = static_cast<int>(std::ceil(2.0 * hy / resolution_m));
+  // A cell holds index * 4 + kind in 16 bits; no field map comes near this many features.
+  const std::size_t most = std::max({field.segments.size(), field.arcs.size(), field.marks.size()});
+  if (most >= 8192) throw std::invalid_argument("FeatureLookup: more than 8191 features of a kind");
   cells_.resize(static_cast<std::size_t>(cols_) * rows_);
   for (int r = 0; r < rows_; ++r) {
     for (int c = 0; c < cols_; ++c) {
       const Eigen::Vector2d centre = origin_ + resolution_m * Eigen::Vector2d(c + 0.5, r + 0.5);
-      cells_[static_cast<std::size_t>(r) * cols_ + c] = nearestFeature(field, centre).feature;
+      const FeatureRef f = nearestFeature(field, centre).feature;
+      cells_[static_cast<std::size_t>(r) * cols_ + c] =
+          f.index < 0 ? -1 : static_cast<std::int16_t>(f.index * 4 + static_cast<int>(f.kind));
     }
   }
 }
@@ -28,8 +34,9 @@ FeatureLookup::Residual FeatureLookup::residual(const Eigen::Vector2d& p) const 
   if (cells_.empty() || !p.allFinite()) return out;
   const int c = std::clamp(static_cast<int>((p.x() - origin_.x()) * inv_resolution_), 0, cols_ - 1);
   const int r = std::clamp(static_cast<int>((p.y() - origin_.y()) * inv_resolution_), 0, rows_ - 1);
-  const FeatureRef& f = cells_[static_cast<std::size_t>(r) * cols_ + c];
-  if (f.index < 0) return out;
+  const int code = cells_[static_cast<std::size_t>(r) * cols_ + c];
+  if (code < 0) return out;
+  const FeatureRef f{static_cast<FeatureKind>(code & 3), code >> 2};
   Eigen::Vector2d q;
   if (f.kind == FeatureKind::kSegment) {
     // Signed point-to-line distance inside the segment: smooth across the line for Gauss-Newton.

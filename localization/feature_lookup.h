@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
 
 #include "field_models/field_model.h"
@@ -38,7 +39,9 @@ class FeatureLookup {
   double resolution_ = 0.05;
   double inv_resolution_ = 20.0;
   int cols_ = 0, rows_ = 0;
-  std::vector<FeatureRef> cells_;
+  /// Per cell: index * 4 + kind of the nearest feature, -1 for none (2 bytes, not 8: the table
+  /// of a large map stays in cache).
+  std::vector<std::int16_t> cells_;
 };
 
 }  // namespace houghloc

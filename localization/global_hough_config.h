@@ -32,6 +32,9 @@ struct GlobalHoughConfig {
   double parallel_floor_m = 0.03;     ///< added across the lines to a 1-D hypothesis' std dev:
                                       ///< its heading error moves the line along its length
   double parallel_floor_rad = 0.015;  ///< same for the heading
+  double parallel_only_share = 0.9;   ///< a 1-D hypothesis scoring at least this share of the
+                                      ///< best one marks a parallel-only frame: every map line
+                                      ///< of the seen direction is then tried (unitless)
   bool use_circle = true;             ///< beyond the paper: centre-circle candidates
   bool use_marks = true;              ///< beyond the paper: penalty-mark candidates
 

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace houghloc {
 namespace {
@@ -18,6 +19,40 @@ constexpr std::size_t kScanPoints = 30;
 // Gauss-Newton iterations of the coarse stage (on the pre-score subsample).
 constexpr int kCoarseIterations = 6;
 
+/// At most config.max_hypotheses of the merged, sorted hypotheses. On a point-symmetric map a
+/// pose and its twin (-x, -y, theta + pi) explain every frame equally well, so when there are
+/// more distinct hypotheses than slots, each pair is first represented once (best first) and
+/// twins fill the slots that are left; the result stays sorted by score.
+std::vector<PoseHypothesis> selectHypotheses(const std::vector<PoseHypothesis>& merged,
+                                             bool symmetric, const HypothesisSetConfig& config) {
+  const std::size_t max = static_cast<std::size_t>(std::max(0, config.max_hypotheses));
+  if (merged.size() <= max || !symmetric) {
+    return {merged.begin(), merged.begin() + std::min(max, merged.size())};
+  }
+  std::vector<char> taken(merged.size(), 0);
+  std::vector<std::size_t> chosen;
+  for (std::size_t i = 0; i < merged.size() && chosen.size() < max; ++i) {
+    PoseHypothesis twin = merged[i];
+    const Pose2& p = twin.field_T_robot;
+    twin.field_T_robot = Pose2(-p.x, -p.y, p.theta + M_PI);
+    bool represented = false;
+    for (std::size_t k : chosen) {
+      // A full pose is not represented by a 1-D hypothesis on its line (it says where).
+      represented |= merged[k].kind == twin.kind && sameHypothesis(merged[k], twin, config);
+    }
+    if (represented) continue;
+    taken[i] = 1;
+    chosen.push_back(i);
+  }
+  for (std::size_t i = 0; i < merged.size() && chosen.size() < max; ++i) {
+    if (!taken[i]) chosen.push_back(i);
+  }
+  std::sort(chosen.begin(), chosen.end());
+  std::vector<PoseHypothesis> out;
+  for (std::size_t i : chosen) out.push_back(merged[i]);
+  return out;
+}
+
 }  // namespace
 
 GlobalHoughLocalizer::GlobalHoughLocalizer(const FieldModel& field, const GlobalHoughConfig& config)
@@ -29,9 +64,12 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
   const HoughTransform sensor = sensorTransform(points);                             // step 1
   const std::vector<OrientationCandidate> headings = orientationCandidates(sensor);  // step 2
   if (headings.empty()) return {};
-  std::vector<PoseHypothesis> candidates;
+  std::vector<PoseHypothesis> candidates, lines;
   for (const OrientationCandidate& heading : headings) {
     const auto constraints = translationConstraints(points, heading.theta_rad);  // step 3
+    for (PoseHypothesis& h : lineCandidates(heading.theta_rad, constraints, config_.solver)) {
+      lines.push_back(h);
+    }
     for (PoseHypothesis& h : solvePoses(heading.theta_rad, constraints, config_.solver)) {  // 4
       if (h.kind == HypothesisKind::kHeadingOnly || onCarpet(h.field_T_robot)) {
         candidates.push_back(h);
@@ -41,10 +79,14 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
   for (PoseHypothesis& h : landmarkPoses(points, headings)) {  // beyond the paper
     if (onCarpet(h.field_T_robot)) candidates.push_back(h);
   }
+  // Candidates number in the hundreds and are large structs: move, and free them at once (on
+  // SPL a fifth of locate() went to page faults from growing and trimming these vectors).
   std::vector<PoseHypothesis> located, heading_only;
+  located.reserve(candidates.size());
   for (PoseHypothesis& h : candidates) {
-    (h.kind == HypothesisKind::kHeadingOnly ? heading_only : located).push_back(h);
+    (h.kind == HypothesisKind::kHeadingOnly ? heading_only : located).push_back(std::move(h));
   }
+  candidates = {};
   if (located.empty()) {  // the paper's case M = 0: lines seen, no translation fits
     for (PoseHypothesis& h : heading_only) h.score = h.support;
     auto out = mergeDuplicates(heading_only, config_.hypotheses);
@@ -56,9 +98,17 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
   const WeightedPoints few = subsamplePoints(points, config_.prescore_points);
   if (located.size() > static_cast<std::size_t>(kFirstRoundShare * config_.pruning.keep)) {
     scoreCandidates(located, subsamplePoints(points, config_.prescore_points / 4));
-    std::stable_sort(located.begin(), located.end(),
-                     [](const auto& a, const auto& b) { return a.score > b.score; });
-    located.resize(kFirstRoundShare * config_.pruning.keep);
+    // Sort indices, not the structs; same order as a stable sort of the candidates.
+    std::vector<std::size_t> order(located.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return located[a].score > located[b].score;
+    });
+    const std::size_t kept = static_cast<std::size_t>(kFirstRoundShare * config_.pruning.keep);
+    std::vector<PoseHypothesis> best;
+    best.reserve(kept);
+    for (std::size_t k = 0; k < kept; ++k) best.push_back(std::move(located[order[k]]));
+    located.swap(best);
   }
   scoreCandidates(located, few);
   located = pruneCandidates(located, config_.pruning);
@@ -72,7 +122,34 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
       refined.push_back(h);
     }
   }
-  std::vector<PoseHypothesis> out = mergeDuplicates(refined, config_.hypotheses);
+  HypothesisSetConfig all = config_.hypotheses;
+  all.max_hypotheses = std::numeric_limits<int>::max();
+  // Full poses and 1-D hypotheses are merged separately: a full pose near a 1-D hypothesis' mean
+  // is not its duplicate (it says where along the line, which the 1-D one does not).
+  std::vector<PoseHypothesis> full, parallel;
+  for (PoseHypothesis& h : refined) {
+    (h.kind == HypothesisKind::kParallel ? parallel : full).push_back(h);
+  }
+  std::vector<PoseHypothesis> merged = mergeDuplicates(full, all);
+  for (PoseHypothesis& h : mergeDuplicates(parallel, all)) merged.push_back(h);
+  if (parallelOnlyFrame(refined, fine)) {
+    // The 1-D candidates that survived pruning are a few of the field's lines; try them all.
+    // A new 1-D hypothesis replaces a weaker one on the same line; a full pose near its mean
+    // stays (it says where along the line).
+    for (PoseHypothesis& h : mergeDuplicates(everyLineHypotheses(lines, fine, evidence), all)) {
+      bool known = false;
+      for (PoseHypothesis& m : merged) {
+        if (known || m.kind != HypothesisKind::kParallel || !sameHypothesis(m, h, all)) continue;
+        known = true;
+        if (h.score > m.score) m = h;
+      }
+      if (!known) merged.push_back(h);
+    }
+  }
+  std::stable_sort(merged.begin(), merged.end(),
+                   [](const auto& a, const auto& b) { return a.score > b.score; });
+  std::vector<PoseHypothesis> out =
+      selectHypotheses(merged, map_.pointSymmetric(), config_.hypotheses);
   normalizeWeights(out, config_.hypotheses);
   return out;
 }
@@ -195,8 +272,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::convergeCandidates(
   for (PoseHypothesis& c : candidates) {
     const Eigen::Vector2d frozen =
         c.kind == HypothesisKind::kParallel ? c.line_direction : Eigen::Vector2d::Zero();
-    c.field_T_robot =
-        refinePose(few, c.field_T_robot, map_.features(), coarse, frozen).field_T_robot;
+    c.field_T_robot = refinePoseMean(few, c.field_T_robot, map_, coarse, frozen);
     c.score = scorePose(few, c.field_T_robot, map_.grid(), config_.scoring).score;
   }
   std::stable_sort(candidates.begin(), candidates.end(),

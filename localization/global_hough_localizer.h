@@ -57,6 +57,17 @@ class GlobalHoughLocalizer {
   std::vector<PoseHypothesis> placeAlongLines(const PoseHypothesis& candidate,
                                               const WeightedPoints& points,
                                               const VisibilityEvidence& evidence) const;
+  /// True when only parallel lines are in view: a 1-D hypothesis explains the points at least
+  /// parallel_only_share as well as the best full pose, and that pose has few points across the
+  /// lines.
+  bool parallelOnlyFrame(const std::vector<PoseHypothesis>& refined,
+                         const WeightedPoints& points) const;
+  /// Parallel-only frames: every 1-D line candidate (all map lines of the seen direction, every
+  /// heading) placed along its line by the scan; one of each pair of point-symmetric twins is
+  /// scanned and the other mirrored.
+  std::vector<PoseHypothesis> everyLineHypotheses(const std::vector<PoseHypothesis>& lines,
+                                                  const WeightedPoints& points,
+                                                  const VisibilityEvidence& evidence) const;
   void finish(PoseHypothesis& candidate, const WeightedPoints& points,
               const VisibilityEvidence& evidence) const;
   bool onCarpet(const Pose2& pose) const;

@@ -21,6 +21,22 @@ const char* trackerStatusName(TrackerStatus status) {
   return "LOST";
 }
 
+namespace {
+
+/// CUSUM of the inlier share's drop below its running mean (TrackerConfig::share_drop_*).
+void trackInlierShare(const TrackerConfig& config, double share, TrackedHypothesis* h) {
+  if (h->expected_inlier_share < 0.0) {
+    h->expected_inlier_share = share;
+    return;
+  }
+  h->share_drop =
+      std::max(0.0, h->share_drop + h->expected_inlier_share - share - config.share_drop_slack);
+  h->expected_inlier_share +=
+      std::clamp(config.expected_share_rate, 0.0, 1.0) * (share - h->expected_inlier_share);
+}
+
+}  // namespace
+
 HypothesisTracker::HypothesisTracker(const FieldModel& field, const TrackerConfig& config)
     : HypothesisTracker(std::make_shared<const FeatureIndex>(field, config.index), config) {}
 
@@ -72,6 +88,7 @@ void HypothesisTracker::correct(const GroundPoints& points) {
     if (judge) {
       const bool disagrees = r.inlier_share < config_.disagree_inlier_share;
       h.disagreeing_frames = disagrees ? h.disagreeing_frames + 1 : 0;
+      trackInlierShare(config_, r.inlier_share, &h);
     }
     log_likelihood[k] = r.mean_log_likelihood;
   }
@@ -96,8 +113,8 @@ void HypothesisTracker::injectHypotheses(const std::vector<GaussianPose>& poses)
   std::vector<GaussianPose> weighted = poses;
   for (GaussianPose& p : weighted) {
     for (const TrackedHypothesis& h : hypotheses_) {
-      const bool established =
-          h.age_frames >= config_.established_age_frames && h.disagreeing_frames == 0;
+      const bool established = h.age_frames >= config_.established_age_frames &&
+                               h.disagreeing_frames == 0 && !dropAlarm(h);
       if (established && areMirrors(h.pose.mean, p.mean, config_.mirror_tolerance_m,
                                     config_.mirror_tolerance_rad)) {
         p.weight *= config_.established_mirror_factor;
@@ -117,7 +134,10 @@ void HypothesisTracker::markInjected() {
   jump_since_injection_ = false;
   blind_since_injection_ = false;
   // Fresh hypotheses get a fresh chance: old disagreement counts no longer ask for more.
-  for (TrackedHypothesis& h : hypotheses_) h.disagreeing_frames = 0;
+  for (TrackedHypothesis& h : hypotheses_) {
+    h.disagreeing_frames = 0;
+    h.share_drop = 0.0;
+  }
 }
 
 void HypothesisTracker::addPoses(const std::vector<GaussianPose>& poses, double share) {
@@ -159,13 +179,21 @@ bool HypothesisTracker::bestIsLost() const {
          !(var_xy <= config_.lost_sigma_m * config_.lost_sigma_m);
 }
 
+bool HypothesisTracker::dropAlarm(const TrackedHypothesis& h) const {
+  return h.share_drop > config_.share_drop_alarm;
+}
+
 bool HypothesisTracker::onlyPeriodic() const {
   return !hypotheses_.empty() && !jump_since_injection_ && !blind_since_injection_ &&
          !bestIsLost() && hypotheses_.front().pose.weight >= config_.low_best_weight;
 }
 
 bool HypothesisTracker::needsGlobalHypotheses() const {
-  return !onlyPeriodic() || seconds_since_injection_ >= config_.periodic_global_s;
+  // A sudden drop asks at once but counts as a low-rate injection (periodic_injected_share): a
+  // newcomer that explains clearly more wins within a frame or two through the likelihood, and
+  // a false alarm (a robot walking into view) costs no more than a periodic injection.
+  return !onlyPeriodic() || dropAlarm(hypotheses_.front()) ||
+         seconds_since_injection_ >= config_.periodic_global_s;
 }
 
 bool HypothesisTracker::topHypothesesMirrorAmbiguous() const {

@@ -53,8 +53,9 @@ class HypothesisTracker {
   void applyHint(const LocalizationHint& hint);
 
   /// True when global hypotheses would help now: none left, an odometry jump, the best hypothesis
-  /// disagrees with the observations for several frames, its weight or certainty dropped, or the
-  /// low-rate period has passed since the last injection.
+  /// disagrees with the observations for several frames or explains suddenly less than it used
+  /// to, its weight or certainty dropped, or the low-rate period has passed since the last
+  /// injection.
   bool needsGlobalHypotheses() const;
   TrackerStatus status() const;
   /// True when a hypothesis near the best one's mirror has a comparable weight.
@@ -69,6 +70,8 @@ class HypothesisTracker {
   void addPoses(const std::vector<GaussianPose>& poses, double share);
   void markInjected();
   bool bestIsLost() const;
+  /// The hypothesis' inlier share dropped suddenly (share_drop above the alarm): kidnap suspect.
+  bool dropAlarm(const TrackedHypothesis& h) const;
   /// Nothing but the period would ask for global hypotheses now.
   bool onlyPeriodic() const;
   void finishSet();

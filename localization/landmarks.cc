@@ -79,8 +79,10 @@ std::optional<CircleObservation> fitCircle(const WeightedPoints& points, double 
     centre -= h.ldlt().solve(b);
   }
   CircleObservation out{centre, support, angularCoverage(angles)};
-  if (out.support < config.circle_min_support || out.arc_rad < config.circle_min_arc_rad ||
-      !centre.allFinite()) {
+  const double tangent_arc = 2.0 * std::sqrt(2.0 * config.circle_band_m / radius);
+  const double min_arc =
+      std::max(config.circle_min_arc_rad, config.circle_tangent_factor * tangent_arc);
+  if (out.support < config.circle_min_support || out.arc_rad < min_arc || !centre.allFinite()) {
     return std::nullopt;
   }
   return out;

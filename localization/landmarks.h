@@ -15,7 +15,11 @@ struct LandmarkConfig {
   double circle_cell_m = 0.05;       ///< cell of the circle-centre vote accumulator
   double circle_band_m = 0.06;       ///< points this close to the circle are its inliers
   double circle_min_support = 10.0;  ///< point weight on the circle
-  double circle_min_arc_rad = 1.0;   ///< angular coverage of the inliers around the centre
+  double circle_min_arc_rad = 0.6;   ///< angular coverage of the inliers around the centre
+  /// A straight line stays within circle_band_m of a circle of radius R over an arc of
+  /// 2 sqrt(2 band / R) rad (tangent); the inliers must cover this many times that arc too, so
+  /// that short arcs of large circles count and lines near small ones do not (unitless).
+  double circle_tangent_factor = 1.2;
   /// A landmark fixes the position up to a rotation about it; besides the step-2 headings, the
   /// heading is scanned at this step (rad) scoring all points (the halfway line through the
   /// circle, the lines next to a mark) ...

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "localization/global_hough_localizer.h"
+#include "localization/tracked_hypotheses.h"
 
 namespace houghloc {
 namespace {
@@ -54,6 +55,22 @@ void weightByPrior(const std::vector<GaussianPose>& prior, double floor,
       density = std::max(density, h.weight / best_weight * std::exp(-0.5 * chi2));
     }
     p.weight *= std::max(0.0, floor) + density;
+  }
+}
+
+/// Adds the mirror twin (-x, -y, theta + pi) of every pose whose twin is not in the list yet.
+/// The field is point-symmetric, so a twin fits the points as well as the pose; the global
+/// localizer's choice between them is arbitrary, and a prior can only tell them apart when both
+/// are weighed together (injected weights are normalised within a batch: a lone twin would get
+/// the batch's whole share whatever its prior).
+void addMirrorTwins(double tolerance_m, double tolerance_rad, std::vector<GaussianPose>* poses) {
+  const size_t n = poses->size();
+  for (size_t i = 0; i < n; ++i) {
+    const GaussianPose twin = mirrored((*poses)[i]);
+    const bool present = std::any_of(poses->begin(), poses->end(), [&](const GaussianPose& p) {
+      return areMirrors((*poses)[i].mean, p.mean, tolerance_m, tolerance_rad);
+    });
+    if (!present) poses->push_back(twin);
   }
 }
 
@@ -138,7 +155,11 @@ LocalizationEstimate Localizer::process(std::int64_t t_us, const std::optional<P
     global_ms = millisecondsSince(global_start);
     global_ran = true;
     std::vector<GaussianPose> poses = toGaussianPoses(found, config_.max_injected_hypotheses);
-    if (global_frames_pending_ > 0) weightByPrior(fall_prior_, config_.fall_prior_floor, &poses);
+    if (global_frames_pending_ > 0) {
+      addMirrorTwins(config_.tracker.mirror_tolerance_m, config_.tracker.mirror_tolerance_rad,
+                     &poses);
+      weightByPrior(fall_prior_, config_.fall_prior_floor, &poses);
+    }
     if (!poses.empty()) {
       const auto inject_start = std::chrono::steady_clock::now();
       tracker_.injectHypotheses(poses);

@@ -30,7 +30,8 @@ ConfigSection globalSection(GlobalHoughConfig& c) {
                     HL_MEMBER(c, line_scan_step_m),   HL_MEMBER(c, line_scan_tolerance),
                     HL_MEMBER(c, max_line_scans),     HL_MEMBER(c, parallel_floor_m),
                     HL_MEMBER(c, parallel_floor_rad), HL_MEMBER(c, use_circle),
-                    HL_MEMBER(c, use_marks),          HL_MEMBER(c, refine_points)};
+                    HL_MEMBER(c, use_marks),          HL_MEMBER(c, refine_points),
+                    HL_MEMBER(c, parallel_only_share)};
   section.children = {
       {"map", mapSection(c.map)},
       {"orientation",
@@ -65,8 +66,8 @@ ConfigSection globalSection(GlobalHoughConfig& c) {
          HL_MEMBER(c.landmarks, circle_min_support), HL_MEMBER(c.landmarks, circle_min_arc_rad),
          HL_MEMBER(c.landmarks, mark_link_m), HL_MEMBER(c.landmarks, mark_isolation_m),
          HL_MEMBER(c.landmarks, mark_min_points), HL_MEMBER(c.landmarks, max_marks),
-         HL_MEMBER(c.landmarks, heading_scan_step_rad),
-         HL_MEMBER(c.landmarks, heading_scan_maxima)}}},
+         HL_MEMBER(c.landmarks, heading_scan_step_rad), HL_MEMBER(c.landmarks, heading_scan_maxima),
+         HL_MEMBER(c.landmarks, circle_tangent_factor)}}},
       {"hypotheses",
        {{HL_MEMBER(c.hypotheses, merge_distance_m), HL_MEMBER(c.hypotheses, merge_angle_rad),
          HL_MEMBER(c.hypotheses, temperature), HL_MEMBER(c.hypotheses, max_hypotheses)}}}};
@@ -97,23 +98,16 @@ ConfigSection updateSection(PointUpdateConfig& c) {
 
 ConfigSection trackerSection(TrackerConfig& c) {
   ConfigSection section;
-  section.fields = {HL_MEMBER(c, likelihood_points),
-                    HL_MEMBER(c, likelihood_deadband),
-                    HL_MEMBER(c, injected_share),
-                    HL_MEMBER(c, periodic_injected_share),
-                    HL_MEMBER(c, hint_add_share),
-                    HL_MEMBER(c, min_points_to_judge),
-                    HL_MEMBER(c, disagree_inlier_share),
-                    HL_MEMBER(c, disagree_frames),
-                    HL_MEMBER(c, low_best_weight),
-                    HL_MEMBER(c, lost_sigma_m),
-                    HL_MEMBER(c, periodic_global_s),
-                    HL_MEMBER(c, lost_without_points_s),
-                    HL_MEMBER(c, mirror_tolerance_m),
-                    HL_MEMBER(c, mirror_tolerance_rad),
-                    HL_MEMBER(c, ambiguous_weight_ratio),
-                    HL_MEMBER(c, own_half_margin_m),
-                    HL_MEMBER(c, established_mirror_factor),
+  section.fields = {HL_MEMBER(c, likelihood_points),     HL_MEMBER(c, likelihood_deadband),
+                    HL_MEMBER(c, injected_share),        HL_MEMBER(c, periodic_injected_share),
+                    HL_MEMBER(c, hint_add_share),        HL_MEMBER(c, min_points_to_judge),
+                    HL_MEMBER(c, disagree_inlier_share), HL_MEMBER(c, disagree_frames),
+                    HL_MEMBER(c, share_drop_slack),      HL_MEMBER(c, share_drop_alarm),
+                    HL_MEMBER(c, expected_share_rate),   HL_MEMBER(c, low_best_weight),
+                    HL_MEMBER(c, lost_sigma_m),          HL_MEMBER(c, periodic_global_s),
+                    HL_MEMBER(c, lost_without_points_s), HL_MEMBER(c, mirror_tolerance_m),
+                    HL_MEMBER(c, mirror_tolerance_rad),  HL_MEMBER(c, ambiguous_weight_ratio),
+                    HL_MEMBER(c, own_half_margin_m),     HL_MEMBER(c, established_mirror_factor),
                     HL_MEMBER(c, established_age_frames)};
   section.children = {
       {"motion",

@@ -111,6 +111,11 @@ MapSignature::MapSignature(const FieldModel& field, const MapSignatureConfig& co
   features_ = FeatureLookup(field, config.lookup_resolution_m, config.grid.margin_m);
   const WeightedPoints evidence = sampleMapLines(field, config.evidence_spacing_m, false);
   bucketEvidence(evidence.points);
+  point_symmetric_ = true;
+  for (const Eigen::Vector2d& p : evidence.points) {
+    point_symmetric_ =
+        point_symmetric_ && grid_.distance(-p) <= std::max(field.line_width, grid_.resolution());
+  }
   for (const Arc2& a : field.arcs) {
     if (a.isFullCircle()) circles_.push_back(a);
   }

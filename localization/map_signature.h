@@ -64,6 +64,9 @@ class MapSignature {
     }
   }
   static constexpr double kEvidenceBucketM = 1.0;  ///< bucket size of the evidence samples
+  /// True when the map maps onto itself under p -> -p (every standard field): a pose and its
+  /// twin (-x, -y, theta + pi) then explain any frame equally well.
+  bool pointSymmetric() const { return point_symmetric_; }
   /// Full circles of the map (the centre circle), for the circle step.
   const std::vector<Arc2>& circles() const { return circles_; }
 
@@ -84,6 +87,7 @@ class MapSignature {
   int bucket_cols_ = 0, bucket_rows_ = 0;
   std::vector<int> bucket_start_;  ///< CSR offsets into evidence_, row-major, one extra at the end
   std::vector<Arc2> circles_;
+  bool point_symmetric_ = false;
 };
 
 /// Points along every segment, arc and mark bar of `field` at `spacing_m`, weight 1 (field frame).

@@ -56,8 +56,26 @@ VisibilityEvidence::VisibilityEvidence(const GroundPoints& frame, const Weighted
     for (int c = stride / 2; c < cols_; c += stride) {
       if (cells_[static_cast<std::size_t>(r) * cols_ + c] & 1) {
         green_.push_back(origin_ + config.raster_m * Eigen::Vector2d(c + 0.5, r + 0.5));
+        green_lo_ = green_lo_.cwiseMin(green_.back());
+        green_hi_ = green_hi_.cwiseMax(green_.back());
       }
     }
+  }
+  // Box of the cells where an unseen line can count (inside with margin, no point near): only
+  // map samples that a pose puts there matter.
+  int c_lo = cols_, c_hi = -1, r_lo = rows_, r_hi = -1;
+  for (int r = 0; r < rows_; ++r) {
+    for (int c = 0; c < cols_; ++c) {
+      if ((cells_[static_cast<std::size_t>(r) * cols_ + c] & 6) != 2) continue;
+      c_lo = std::min(c_lo, c);
+      c_hi = std::max(c_hi, c);
+      r_lo = std::min(r_lo, r);
+      r_hi = std::max(r_hi, r);
+    }
+  }
+  if (c_hi >= 0) {
+    unseen_lo_ = origin_ + config.raster_m * Eigen::Vector2d(c_lo, r_lo);
+    unseen_hi_ = origin_ + config.raster_m * Eigen::Vector2d(c_hi + 1, r_hi + 1);
   }
   empty_ = false;
 }
@@ -100,43 +118,45 @@ void VisibilityEvidence::rasterise(const std::vector<GroundPolygon>& polygons) {
     }
   }
   // Erode the region by the margin (square structuring element, separable: rows, then
-  // columns): bit 1.
+  // columns): bit 1. A cell survives a pass when the run of region cells through it reaches
+  // `margin` cells on both sides; runs are counted once per cell instead of rescanning the window.
+  const int window = 2 * margin + 1;
   std::vector<unsigned char> across(cells_.size(), 0);
   for (int r = 0; r < rows_; ++r) {
-    for (int c = margin; c < cols_ - margin; ++c) {
-      bool all = true;
-      for (int cc = c - margin; cc <= c + margin && all; ++cc) {
-        all = cells_[static_cast<std::size_t>(r) * cols_ + cc] & 1;
-      }
-      across[static_cast<std::size_t>(r) * cols_ + c] = all;
+    const unsigned char* row = &cells_[static_cast<std::size_t>(r) * cols_];
+    int run = 0;  // region cells ending at c
+    for (int c = 0; c < cols_; ++c) {
+      run = (row[c] & 1) ? run + 1 : 0;
+      if (run >= window) across[static_cast<std::size_t>(r) * cols_ + c - margin] = 1;
     }
   }
-  for (int r = margin; r < rows_ - margin; ++r) {
-    for (int c = margin; c < cols_ - margin; ++c) {
-      bool all = true;
-      for (int rr = r - margin; rr <= r + margin && all; ++rr) {
-        all = across[static_cast<std::size_t>(rr) * cols_ + c];
-      }
-      if (all) cells_[static_cast<std::size_t>(r) * cols_ + c] |= 2;
+  std::vector<int> runs(cols_, 0);  // per column: `across` cells ending at row r
+  for (int r = 0; r < rows_; ++r) {
+    const unsigned char* row = &across[static_cast<std::size_t>(r) * cols_];
+    for (int c = 0; c < cols_; ++c) {
+      runs[c] = row[c] ? runs[c] + 1 : 0;
+      if (runs[c] >= window) cells_[static_cast<std::size_t>(r - margin) * cols_ + c] |= 2;
     }
   }
 }
 
 double VisibilityEvidence::unseenLineLength(const Pose2& field_T_robot,
                                             const MapSignature& map) const {
-  if (empty_) return 0.0;
-  // Only the map samples near the raster can fall into it: its corners in the field frame
-  // bound the buckets to visit.
+  if (empty_ || !(unseen_lo_.x() <= unseen_hi_.x())) return 0.0;
+  // Only the map samples that can fall into a counting cell matter: the corners of those cells'
+  // box in the field frame (padded against rounding) bound the buckets to visit.
   const double c_f = std::cos(field_T_robot.theta), s_f = std::sin(field_T_robot.theta);
   Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
   for (int k = 0; k < 4; ++k) {
-    const double x = origin_.x() + (k & 1 ? cols_ : 0) * config_.raster_m;
-    const double y = origin_.y() + (k & 2 ? rows_ : 0) * config_.raster_m;
+    const double x = k & 1 ? unseen_hi_.x() : unseen_lo_.x();
+    const double y = k & 2 ? unseen_hi_.y() : unseen_lo_.y();
     const Eigen::Vector2d q(c_f * x - s_f * y + field_T_robot.x,
                             s_f * x + c_f * y + field_T_robot.y);
     lo = lo.cwiseMin(q);
     hi = hi.cwiseMax(q);
   }
+  lo -= Eigen::Vector2d::Constant(1e-6);
+  hi += Eigen::Vector2d::Constant(1e-6);
   const Pose2 robot_T_field = field_T_robot.inverse();
   const double c = std::cos(robot_T_field.theta), s = std::sin(robot_T_field.theta);
   const double inv = 1.0 / config_.raster_m;
@@ -156,6 +176,17 @@ double VisibilityEvidence::greenOutsideCarpet(const Pose2& field_T_robot,
   const double hx = field.outerHalfLength() + config_.outside_margin_m;
   const double hy = field.outerHalfWidth() + config_.outside_margin_m;
   const double c = std::cos(field_T_robot.theta), s = std::sin(field_T_robot.theta);
+  // The samples lie in their box: when its corners are all on the carpet (with a margin against
+  // rounding), so is every sample.
+  bool all_inside = !green_.empty();
+  for (int k = 0; k < 4 && all_inside; ++k) {
+    const double gx = k & 1 ? green_hi_.x() : green_lo_.x();
+    const double gy = k & 2 ? green_hi_.y() : green_lo_.y();
+    const double x = c * gx - s * gy + field_T_robot.x;
+    const double y = s * gx + c * gy + field_T_robot.y;
+    all_inside = std::abs(x) < hx - 1e-6 && std::abs(y) < hy - 1e-6;
+  }
+  if (all_inside) return 0.0;
   int outside = 0;
   for (const auto& g : green_) {
     const double x = c * g.x() - s * g.y() + field_T_robot.x;

@@ -50,7 +50,12 @@ class VisibilityEvidence {
   /// Per cell: bit 0 inside the region, bit 1 inside with margin, bit 2 near a seen point.
   std::vector<unsigned char> cells_;
   std::vector<Eigen::Vector2d> green_;  ///< lattice samples inside the region, robot frame
-  double green_cell_area_ = 0.0;        ///< m^2 per green sample
+  Eigen::Vector2d green_lo_ = Eigen::Vector2d::Constant(1e300);  ///< box of green_
+  Eigen::Vector2d green_hi_ = Eigen::Vector2d::Constant(-1e300);
+  /// Box of the cells that count for unseenLineLength (robot frame; empty when lo > hi).
+  Eigen::Vector2d unseen_lo_ = Eigen::Vector2d::Constant(1e300);
+  Eigen::Vector2d unseen_hi_ = Eigen::Vector2d::Constant(-1e300);
+  double green_cell_area_ = 0.0;  ///< m^2 per green sample
   double density_ = 0.0;
 };
 

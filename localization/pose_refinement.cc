@@ -13,27 +13,114 @@ struct NormalEquations {
   double sum_wr2 = 0.0, sum_w = 0.0;
 };
 
+/// `grid` (may be null) only skips points whose residual would exceed max_distance_m anyway,
+/// so the sums are the same with or without it. Two passes: the feature lookups first (short
+/// independent iterations, so their cache misses overlap), then the sums in registers, in the
+/// same order and with the same products as eq.h += w j j^T.
 NormalEquations accumulate(const WeightedPoints& points, const Pose2& pose,
-                           const FeatureLookup& features, const RefinementConfig& config) {
-  NormalEquations eq;
+                           const FeatureLookup& features, const DistanceGrid* grid,
+                           const RefinementConfig& config) {
+  struct Term {
+    double w, r, jx, jy, jt;
+  };
+  constexpr std::size_t kBatch = 64;
+  Term terms[kBatch];
+  double h00 = 0.0, h01 = 0.0, h02 = 0.0, h10 = 0.0, h11 = 0.0, h12 = 0.0, h20 = 0.0, h21 = 0.0,
+         h22 = 0.0, b0 = 0.0, b1 = 0.0, b2 = 0.0, sum_wr2 = 0.0, sum_w = 0.0;
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector2d& p = points.points[i];
-    const Eigen::Vector2d rp(c * p.x() - s * p.y(), s * p.x() + c * p.y());
-    const FeatureLookup::Residual r = features.residual(rp + pose.translation());
-    if (!r.valid || std::abs(r.distance_m) > config.max_distance_m) continue;
-    const double abs_r = std::abs(r.distance_m);
-    const double huber = abs_r <= config.huber_m ? 1.0 : config.huber_m / abs_r;
-    const double w = points.weights[i] * huber;
-    // d p_field / d theta = Rz(theta + pi/2) p = (-rp.y, rp.x).
-    const Eigen::Vector3d j(r.direction.x(), r.direction.y(),
-                            r.direction.dot(Eigen::Vector2d(-rp.y(), rp.x())));
-    eq.h += w * j * j.transpose();
-    eq.b += w * j * r.distance_m;
-    eq.sum_wr2 += w * r.distance_m * r.distance_m;
-    eq.sum_w += w;
+  for (std::size_t start = 0; start < points.size(); start += kBatch) {
+    const std::size_t end = std::min(points.size(), start + kBatch);
+    std::size_t n = 0;
+    for (std::size_t i = start; i < end; ++i) {
+      const Eigen::Vector2d& p = points.points[i];
+      const Eigen::Vector2d rp(c * p.x() - s * p.y(), s * p.x() + c * p.y());
+      const Eigen::Vector2d q = rp + pose.translation();
+      // |residual| >= the exact distance to the nearest feature >= the grid's lower bound.
+      if (grid != nullptr && grid->lowerBound(q) > config.max_distance_m) continue;
+      const FeatureLookup::Residual r = features.residual(q);
+      if (!r.valid || std::abs(r.distance_m) > config.max_distance_m) continue;
+      const double abs_r = std::abs(r.distance_m);
+      const double huber = abs_r <= config.huber_m ? 1.0 : config.huber_m / abs_r;
+      // d p_field / d theta = Rz(theta + pi/2) p = (-rp.y, rp.x).
+      terms[n++] = {points.weights[i] * huber, r.distance_m, r.direction.x(), r.direction.y(),
+                    r.direction.dot(Eigen::Vector2d(-rp.y(), rp.x()))};
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      const Term& t = terms[k];
+      const double wx = t.w * t.jx, wy = t.w * t.jy, wt = t.w * t.jt;
+      h00 += wx * t.jx;
+      h01 += wx * t.jy;
+      h02 += wx * t.jt;
+      h10 += wy * t.jx;
+      h11 += wy * t.jy;
+      h12 += wy * t.jt;
+      h20 += wt * t.jx;
+      h21 += wt * t.jy;
+      h22 += wt * t.jt;
+      b0 += wx * t.r;
+      b1 += wy * t.r;
+      b2 += wt * t.r;
+      sum_wr2 += t.w * t.r * t.r;
+      sum_w += t.w;
+    }
   }
+  NormalEquations eq;
+  eq.h << h00, h01, h02, h10, h11, h12, h20, h21, h22;
+  eq.b << b0, b1, b2;
+  eq.sum_wr2 = sum_wr2;
+  eq.sum_w = sum_w;
   return eq;
+}
+
+Eigen::Matrix3d priorOf(const RefinementConfig& config) {
+  return Eigen::Vector3d(1.0 / (config.prior_sigma_m * config.prior_sigma_m),
+                         1.0 / (config.prior_sigma_m * config.prior_sigma_m),
+                         1.0 / (config.prior_sigma_rad * config.prior_sigma_rad))
+      .asDiagonal();
+}
+
+/// The Gauss-Newton iterations. Returns true when the last accumulate() ran at the returned
+/// pose (the loop stopped before moving), so `eq` already holds the final statistics.
+bool iterate(const WeightedPoints& points, const FeatureLookup& features, const DistanceGrid* grid,
+             const RefinementConfig& config, const Eigen::Vector2d& frozen_direction, Pose2* pose,
+             NormalEquations* eq) {
+  Eigen::Matrix3d frozen = Eigen::Matrix3d::Zero();
+  if (frozen_direction.squaredNorm() > 0.0) {
+    frozen.topLeftCorner<2, 2>() = 1e6 * frozen_direction * frozen_direction.transpose();
+  }
+  const Eigen::Matrix3d prior = priorOf(config);
+  for (int it = 0; it < config.iterations; ++it) {
+    *eq = accumulate(points, *pose, features, grid, config);
+    if (eq->sum_w <= 0.0) return true;
+    // Small damping (Levenberg) keeps the step bounded where the points leave a direction
+    // unconstrained; `frozen` pins the direction along parallel lines.
+    const Eigen::Matrix3d a = eq->h + 1e-3 * eq->sum_w * prior + frozen;
+    const Eigen::Vector3d delta = -a.ldlt().solve(eq->b);
+    if (!delta.allFinite()) return true;
+    *pose = Pose2(pose->x + delta.x(), pose->y + delta.y(), pose->theta + delta.z());
+    if (delta.head<2>().norm() + std::abs(delta.z()) < config.converged_m) break;
+  }
+  return false;
+}
+
+RefinementResult refine(const WeightedPoints& points, const Pose2& initial,
+                        const FeatureLookup& features, const DistanceGrid* grid,
+                        const RefinementConfig& config, const Eigen::Vector2d& frozen_direction) {
+  RefinementResult out;
+  out.field_T_robot = initial;
+  NormalEquations eq;
+  if (!iterate(points, features, grid, config, frozen_direction, &out.field_T_robot, &eq)) {
+    eq = accumulate(points, out.field_T_robot, features, grid, config);
+  }
+  out.information = eq.h;
+  out.inlier_weight = eq.sum_w;
+  out.rms_m = eq.sum_w > 0.0 ? std::sqrt(eq.sum_wr2 / eq.sum_w) : 0.0;
+  const double sigma = std::max(out.rms_m, config.sigma_floor_m);
+  const double scale =
+      eq.sum_w > config.effective_points ? config.effective_points / eq.sum_w : 1.0;
+  const Eigen::Matrix3d info = eq.h * (scale / (sigma * sigma)) + priorOf(config);
+  out.covariance = info.inverse();
+  return out;
 }
 
 }  // namespace
@@ -41,40 +128,21 @@ NormalEquations accumulate(const WeightedPoints& points, const Pose2& pose,
 RefinementResult refinePose(const WeightedPoints& points, const Pose2& initial,
                             const FeatureLookup& features, const RefinementConfig& config,
                             const Eigen::Vector2d& frozen_direction) {
-  RefinementResult out;
-  out.field_T_robot = initial;
-  Eigen::Matrix3d frozen = Eigen::Matrix3d::Zero();
-  if (frozen_direction.squaredNorm() > 0.0) {
-    frozen.topLeftCorner<2, 2>() = 1e6 * frozen_direction * frozen_direction.transpose();
-  }
-  const Eigen::Matrix3d prior =
-      Eigen::Vector3d(1.0 / (config.prior_sigma_m * config.prior_sigma_m),
-                      1.0 / (config.prior_sigma_m * config.prior_sigma_m),
-                      1.0 / (config.prior_sigma_rad * config.prior_sigma_rad))
-          .asDiagonal();
+  return refine(points, initial, features, nullptr, config, frozen_direction);
+}
+
+RefinementResult refinePose(const WeightedPoints& points, const Pose2& initial,
+                            const MapSignature& map, const RefinementConfig& config,
+                            const Eigen::Vector2d& frozen_direction) {
+  return refine(points, initial, map.features(), &map.grid(), config, frozen_direction);
+}
+
+Pose2 refinePoseMean(const WeightedPoints& points, const Pose2& initial, const MapSignature& map,
+                     const RefinementConfig& config, const Eigen::Vector2d& frozen_direction) {
+  Pose2 pose = initial;
   NormalEquations eq;
-  for (int it = 0; it < config.iterations; ++it) {
-    eq = accumulate(points, out.field_T_robot, features, config);
-    if (eq.sum_w <= 0.0) break;
-    // Small damping (Levenberg) keeps the step bounded where the points leave a direction
-    // unconstrained; `frozen` pins the direction along parallel lines.
-    const Eigen::Matrix3d a = eq.h + 1e-3 * eq.sum_w * prior + frozen;
-    const Eigen::Vector3d delta = -a.ldlt().solve(eq.b);
-    if (!delta.allFinite()) break;
-    const Pose2& p = out.field_T_robot;
-    out.field_T_robot = Pose2(p.x + delta.x(), p.y + delta.y(), p.theta + delta.z());
-    if (delta.head<2>().norm() + std::abs(delta.z()) < config.converged_m) break;
-  }
-  eq = accumulate(points, out.field_T_robot, features, config);
-  out.information = eq.h;
-  out.inlier_weight = eq.sum_w;
-  out.rms_m = eq.sum_w > 0.0 ? std::sqrt(eq.sum_wr2 / eq.sum_w) : 0.0;
-  const double sigma = std::max(out.rms_m, config.sigma_floor_m);
-  const double scale =
-      eq.sum_w > config.effective_points ? config.effective_points / eq.sum_w : 1.0;
-  const Eigen::Matrix3d info = eq.h * (scale / (sigma * sigma)) + prior;
-  out.covariance = info.inverse();
-  return out;
+  iterate(points, map.features(), &map.grid(), config, frozen_direction, &pose, &eq);
+  return pose;
 }
 
 }  // namespace houghloc

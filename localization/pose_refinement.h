@@ -5,6 +5,7 @@
 #include "field_models/pose2.h"
 #include "localization/feature_lookup.h"
 #include "localization/hough_transform.h"
+#include "localization/map_signature.h"
 
 namespace houghloc {
 
@@ -36,5 +37,17 @@ struct RefinementResult {
 RefinementResult refinePose(const WeightedPoints& points, const Pose2& initial,
                             const FeatureLookup& features, const RefinementConfig& config,
                             const Eigen::Vector2d& frozen_direction = Eigen::Vector2d::Zero());
+
+/// Same result, bit for bit, faster: points that the map's distance grid puts certainly farther
+/// than max_distance_m from every line are skipped without a feature lookup.
+RefinementResult refinePose(const WeightedPoints& points, const Pose2& initial,
+                            const MapSignature& map, const RefinementConfig& config,
+                            const Eigen::Vector2d& frozen_direction = Eigen::Vector2d::Zero());
+
+/// The pose of refinePose(.., map, ..) alone: without the final pass over the points that
+/// only computes information, covariance and rms (for coarse stages that keep only the pose).
+Pose2 refinePoseMean(const WeightedPoints& points, const Pose2& initial, const MapSignature& map,
+                     const RefinementConfig& config,
+                     const Eigen::Vector2d& frozen_direction = Eigen::Vector2d::Zero());
 
 }  // namespace houghloc

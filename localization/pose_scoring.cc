@@ -7,23 +7,77 @@
 
 namespace houghloc {
 
-PoseScore scorePose(const WeightedPoints& points, const Pose2& pose, const DistanceGrid& grid,
-                    const ScoringConfig& config) {
+namespace {
+
+/// Sum over the points at field positions position(i), in batches: first the positions and a
+/// prefetch of the grid nodes near lines, then the lookups, so that the cache misses of a batch
+/// overlap instead of following one another.
+template <typename Position>
+PoseScore scoreAt(const std::vector<double>& weights, Position&& position, const DistanceGrid& grid,
+                  const ScoringConfig& config) {
   PoseScore out;
-  if (points.empty() || !pose.isFinite()) return out;
-  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   const double inv_w2 = 1.0 / (config.kernel_width_m * config.kernel_width_m);
+  // Beyond both the kernel width and the inlier distance a point adds exactly nothing, so the
+  // grid is only read near lines (distanceBelow; the 1e-9 keeps d == width out of the question).
+  const double limit = std::max(config.kernel_width_m, config.inlier_distance_m) + 1e-9;
   double total = 0.0, inliers = 0.0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector2d& p = points.points[i];
-    const Eigen::Vector2d q(c * p.x() - s * p.y() + pose.x, s * p.x() + c * p.y() + pose.y);
-    const double d = grid.distance(q);
-    const double w = points.weights[i];
-    total += w;
-    out.score += w * std::max(0.0, 1.0 - d * d * inv_w2);
-    if (d <= config.inlier_distance_m) inliers += w;
+  constexpr std::size_t kBatch = 32;
+  Eigen::Vector2d q[kBatch];
+  const std::size_t size = weights.size();
+  for (std::size_t start = 0; start < size; start += kBatch) {
+    const std::size_t n = std::min(kBatch, size - start);
+    for (std::size_t k = 0; k < n; ++k) {
+      q[k] = position(start + k);
+      grid.prefetch(q[k], limit);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      const double d = grid.distanceBelow(q[k], limit);
+      const double w = weights[start + k];
+      total += w;
+      out.score += w * std::max(0.0, 1.0 - d * d * inv_w2);
+      if (d <= config.inlier_distance_m) inliers += w;
+    }
   }
   out.inlier_share = total > 0.0 ? inliers / total : 0.0;
+  return out;
+}
+
+}  // namespace
+
+PoseScore scorePose(const WeightedPoints& points, const Pose2& pose, const DistanceGrid& grid,
+                    const ScoringConfig& config) {
+  if (points.empty() || !pose.isFinite()) return {};
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  return scoreAt(
+      points.weights,
+      [&](std::size_t i) {
+        const Eigen::Vector2d& p = points.points[i];
+        return Eigen::Vector2d(c * p.x() - s * p.y() + pose.x, s * p.x() + c * p.y() + pose.y);
+      },
+      grid, config);
+}
+
+std::vector<PoseScore> scoreTranslations(const WeightedPoints& points, double theta_rad,
+                                         const std::vector<Eigen::Vector2d>& translations,
+                                         const DistanceGrid& grid, const ScoringConfig& config) {
+  std::vector<PoseScore> out(translations.size());
+  const double theta = Pose2(0.0, 0.0, theta_rad).theta;  // normalised, as scorePose sees it
+  if (points.empty() || !std::isfinite(theta)) return out;
+  // c x - s y + t_x is evaluated left to right, so rotating first gives the same bits.
+  const double c = std::cos(theta), s = std::sin(theta);
+  std::vector<double> rx(points.size()), ry(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector2d& p = points.points[i];
+    rx[i] = c * p.x() - s * p.y();
+    ry[i] = s * p.x() + c * p.y();
+  }
+  for (std::size_t k = 0; k < translations.size(); ++k) {
+    const double tx = translations[k].x(), ty = translations[k].y();
+    if (!std::isfinite(tx) || !std::isfinite(ty)) continue;
+    out[k] = scoreAt(
+        points.weights, [&](std::size_t i) { return Eigen::Vector2d(rx[i] + tx, ry[i] + ty); },
+        grid, config);
+  }
   return out;
 }
 

@@ -25,6 +25,13 @@ struct PoseScore {
 PoseScore scorePose(const WeightedPoints& points, const Pose2& field_T_robot,
                     const DistanceGrid& grid, const ScoringConfig& config);
 
+/// scorePose(points, Pose2(t.x(), t.y(), theta_rad), grid, config) for every translation t (a
+/// scan along lines at one heading): the same numbers, bit for bit, with the points rotated
+/// once instead of once per pose.
+std::vector<PoseScore> scoreTranslations(const WeightedPoints& points, double theta_rad,
+                                         const std::vector<Eigen::Vector2d>& translations,
+                                         const DistanceGrid& grid, const ScoringConfig& config);
+
 struct PruningConfig {
   double min_inlier_share = 0.25;     ///< drop candidates with fewer points on map segments
   double min_relative_score = 0.5;    ///< ... or scoring below this share of the best candidate

@@ -51,6 +51,22 @@ PoseHypothesis headingOnlyHypothesis(double theta_r, const PoseSolverConfig& con
   return h;
 }
 
+std::vector<PoseHypothesis> lineCandidates(
+    double theta_r, const std::vector<std::vector<TranslationConstraint>>& per_direction,
+    const PoseSolverConfig& config) {
+  const std::vector<TranslationConstraint>* strongest = nullptr;
+  for (const auto& constraints : per_direction) {
+    if (!constraints.empty() &&
+        (strongest == nullptr || constraints[0].support > (*strongest)[0].support)) {
+      strongest = &constraints;
+    }
+  }
+  std::vector<PoseHypothesis> out;
+  if (strongest == nullptr) return out;
+  for (const auto& c : *strongest) out.push_back(parallelHypothesis(theta_r, c, 0.0, config));
+  return out;
+}
+
 std::vector<PoseHypothesis> solvePoses(
     double theta_r, const std::vector<std::vector<TranslationConstraint>>& per_direction,
     const PoseSolverConfig& config) {

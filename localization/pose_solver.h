@@ -37,6 +37,13 @@ std::vector<PoseHypothesis> solvePoses(
 PoseHypothesis parallelHypothesis(double theta_r, const TranslationConstraint& constraint,
                                   double along_m, const PoseSolverConfig& config);
 
+/// Parallel-only frames: one 1-D hypothesis per shift of the direction with the most support
+/// for heading theta_R (each shift aligns the seen line with one map line of that direction), so
+/// that every map line of the direction is tried. Empty when no direction has a constraint.
+std::vector<PoseHypothesis> lineCandidates(
+    double theta_r, const std::vector<std::vector<TranslationConstraint>>& per_direction,
+    const PoseSolverConfig& config);
+
 /// The paper's M = 0 case: heading theta_R, position unknown (at the field origin).
 PoseHypothesis headingOnlyHypothesis(double theta_r, const PoseSolverConfig& config);
 

@@ -14,6 +14,13 @@ struct TrackedHypothesis {
   double inlier_share = 0.0;   ///< of the last frame with points
   int points_associated = 0;   ///< points that passed the gates in the last frame
   int disagreeing_frames = 0;  ///< consecutive frames with too few inliers
+  /// Running mean of the inlier share over the frames judged so far (what this hypothesis
+  /// usually explains here: a view with robots or a busy background explains less); negative
+  /// until the first judged frame.
+  double expected_inlier_share = -1.0;
+  /// CUSUM of the inlier share's drop below expected_inlier_share (share x frames): a kidnap
+  /// shows as a sudden drop even when the old pose still explains half of the new view.
+  double share_drop = 0.0;
 };
 
 /// Merging and pruning of the tracked set.

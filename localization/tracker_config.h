@@ -33,9 +33,20 @@ struct TrackerConfig {
   int min_points_to_judge = 20;        ///< frames with fewer points do not count as evidence
   double disagree_inlier_share = 0.5;  ///< a hypothesis explaining fewer points disagrees
   int disagree_frames = 5;             ///< that many frames in a row: LOST, ask for global
-  double low_best_weight = 0.25;       ///< best normalised weight below this: ask
-  double lost_sigma_m = 0.5;           ///< best position std above this: LOST, ask
-  double periodic_global_s = 3.0;      ///< otherwise ask at this period, s
+  /// Kidnap detector (a CUSUM): each judged frame adds expected - inlier share -
+  /// share_drop_slack to the hypothesis' share_drop (not below 0); above share_drop_alarm
+  /// (share x frames) the tracker asks for global hypotheses at once. One frame explaining
+  /// nothing where everything used to be explained fires; 30 % less fires within four frames.
+  /// The newcomers get periodic_injected_share: one that explains clearly more wins through the
+  /// likelihood within a frame or two, and a false alarm (a robot walking into view) costs no
+  /// more than a periodic injection. The expected share follows the inlier share at
+  /// expected_share_rate per judged frame, so a lasting change stops the alarms.
+  double share_drop_slack = 0.1;
+  double share_drop_alarm = 0.6;
+  double expected_share_rate = 0.05;  ///< per judged frame, 0..1
+  double low_best_weight = 0.25;      ///< best normalised weight below this: ask
+  double lost_sigma_m = 0.5;          ///< best position std above this: LOST, ask
+  double periodic_global_s = 3.0;     ///< otherwise ask at this period, s
   /// No points for longer than this: the estimate is dead reckoning only, status LOST; the first
   /// frame with points again asks for global hypotheses, s.
   double lost_without_points_s = 5.0;

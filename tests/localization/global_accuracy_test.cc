@@ -21,9 +21,10 @@ TEST_P(GlobalAccuracy, WideViewsFindTheTruthAndAreAccurate) {
     const AccuracySummary s = evaluateGlobal(run);
     std::cout << s.describe(run.field + "/" + view) << "\n";
     ASSERT_EQ(s.frames, run.frames);
-    // Issue target: >= 95%. Met on spl, spl2019, kid, adult. Not met on msl (measured 90%;
-    // the exhaustive search reaches ~92% there): the 22 x 14 m field seen to 5-7 m often shows
-    // a single L or T that fits many places; see docs/global-localization.md.
+    // Issue target: >= 95%. Met on spl, spl2019, kid, adult. Not met on msl (measured 90-92.5%):
+    // most failures are lone arcs of the 4 m centre circle, where 130-200 deg of rotation about
+    // the circle centre score within 5% of the truth with negative evidence included (the
+    // halfway line and centre mark lie outside the view); see docs/global-localization.md.
     EXPECT_GE(s.rate(s.ghl_any), run.field == "msl" ? 87.0 : 95.0) << view;
     EXPECT_LE(median(s.position_errors_m), 0.03) << view;
     EXPECT_LE(median(s.heading_errors_rad), 1.0 * M_PI / 180.0) << view;
@@ -40,10 +41,10 @@ TEST_P(GlobalAccuracy, ParallelOnlyFramesKeepTheTruthWithinThreeSigma) {
   std::cout << run.field << " parallel-only: " << s.within << "/" << s.frames
             << " within 3 sigma\n";
   ASSERT_GE(s.frames, 50);
-  // Issue target: 99%. NOT met (measured 52-72% depending on the field): with one line in view
-  // the right map line is often not among the 12 hypotheses (every parallel line of the field
-  // and its mirror twin fit). This bound guards the current behaviour; see the docs.
-  EXPECT_GE(s.within, (run.field == "kid" ? 0.65 : 0.48) * s.frames);
+  // Issue target: 99%, met on every field (measured 99-100%). Every map line of the seen
+  // direction is tried for every heading, placed along its line by the scan (segment extents,
+  // negative evidence), and a point-symmetric twin only takes a slot when there is room.
+  EXPECT_GE(s.within, 0.99 * s.frames);
 }
 
 INSTANTIATE_TEST_SUITE_P(StandardFields, GlobalAccuracy,

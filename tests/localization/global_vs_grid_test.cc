@@ -38,11 +38,10 @@ TEST_P(GlobalVsGrid, AtLeastAsOftenAsTheExhaustiveSearch) {
   ASSERT_EQ(s.frames, run.frames);
   // Negative evidence must not lose frames that the positive-only variant finds.
   EXPECT_GE(s.ghl_any, s.ghl_positive_any);
-  // Issue target: within 1 percentage point of the exhaustive search. Met on every row but
-  // adult/nao-bottom, where GHL is one frame (5 points) behind: a 1.2 m view of a short arc of
-  // the 3 m circle whose heading step 2 misses by 7 deg (docs/global-localization.md).
-  const double allowed = run.field == "adult" && run.view == "nao-bottom" ? 5.0 : 1.0;
-  EXPECT_GE(s.rate(s.ghl_any), s.rate(s.grid_any) - allowed);
+  // Issue target: within 1 percentage point of the exhaustive search, met on every row (the
+  // adult/nao-bottom frame with a short arc of the 3 m circle counts since circles are accepted
+  // from a shorter arc for large radii, docs/global-localization.md).
+  EXPECT_GE(s.rate(s.ghl_any), s.rate(s.grid_any) - 1.0);
   EXPECT_LE(median(s.position_errors_m), 0.03);
   EXPECT_LE(median(s.heading_errors_rad), 1.0 * M_PI / 180.0);
 }

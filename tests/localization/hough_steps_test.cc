@@ -152,6 +152,15 @@ TEST(TranslationSearch, TwoPerpendicularLinesAtKnownOffsets) {
   }
 }
 
+TEST(MapSignature, StandardFieldsArePointSymmetricAndAnExtraLineBreaksIt) {
+  for (const char* name : {"spl2019", "msl"}) {  // no goal area; the most features
+    EXPECT_TRUE(MapSignature(makeStandardField(name)).pointSymmetric()) << name;
+  }
+  FieldModel field = makeStandardField("spl");
+  field.segments.push_back({Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(2.0, 1.0)});
+  EXPECT_FALSE(MapSignature(field).pointSymmetric());
+}
+
 TEST(MapSignature, RectangularFieldsHaveTwoDominantDirections) {
   for (const std::string& name : standardFieldNames()) {
     MapSignature map(makeStandardField(name));

@@ -2,28 +2,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "field_models/standard_fields.h"
+#include "tests/localization/localizer_test_support.h"
 #include "tests/localization/tracking_scenario.h"
 
 namespace houghloc {
 namespace {
 
-GaussianPose gaussian(double x, double y, double theta, double sigma_m = 0.1,
-                      double sigma_rad = 0.1, double weight = 1.0) {
-  GaussianPose g;
-  g.mean = Pose2(x, y, theta);
-  g.covariance =
-      Eigen::Vector3d(sigma_m * sigma_m, sigma_m * sigma_m, sigma_rad * sigma_rad).asDiagonal();
-  g.weight = weight;
-  return g;
-}
-
-LocalizationHint hint(HintKind kind, std::vector<GaussianPose> poses = {}) {
-  LocalizationHint h;
-  h.kind = kind;
-  h.poses = std::move(poses);
-  return h;
-}
+using testing::gaussianAt;
+using testing::hint;
 
 void expectFinite(const HypothesisTracker& tracker) {
   for (const TrackedHypothesis& h : tracker.hypotheses()) {
@@ -47,13 +36,13 @@ TEST_F(HypothesisTrackerTest, StartsInitializingAndAsksForGlobalHypotheses) {
 }
 
 TEST_F(HypothesisTrackerTest, ResetAddMirrorOwnHalfAndUnknownHints) {
-  tracker_.applyHint(hint(HintKind::kResetTo, {gaussian(2.0, 1.0, 0.3)}));
+  tracker_.applyHint(hint(HintKind::kResetTo, {gaussianAt(Pose2(2.0, 1.0, 0.3), 1.0, 0.1, 0.1)}));
   ASSERT_EQ(tracker_.hypotheses().size(), 1u);
   EXPECT_NEAR(tracker_.hypotheses()[0].pose.mean.x, 2.0, 1e-12);
   EXPECT_NEAR(tracker_.hypotheses()[0].pose.weight, 1.0, 1e-12);
   EXPECT_FALSE(tracker_.needsGlobalHypotheses());
 
-  tracker_.applyHint(hint(HintKind::kAdd, {gaussian(-1.0, 0.0, 0.0)}));
+  tracker_.applyHint(hint(HintKind::kAdd, {gaussianAt(Pose2(-1.0, 0.0, 0.0), 1.0, 0.1, 0.1)}));
   ASSERT_EQ(tracker_.hypotheses().size(), 2u);
   EXPECT_NEAR(tracker_.hypotheses()[0].pose.weight, 0.5, 1e-12);  // hint_add_share
 
@@ -79,8 +68,8 @@ TEST_F(HypothesisTrackerTest, ResetAddMirrorOwnHalfAndUnknownHints) {
 
 TEST_F(HypothesisTrackerTest, MirrorPairStaysAmbiguousUntilOwnHalfHint) {
   const Pose2 truth(-2.0, 1.0, 0.4);
-  tracker_.applyHint(hint(HintKind::kResetTo, {gaussian(truth.x, truth.y, truth.theta),
-                                               mirrored(gaussian(truth.x, truth.y, truth.theta))}));
+  tracker_.applyHint(hint(HintKind::kResetTo, {gaussianAt(truth, 1.0, 0.1, 0.1),
+                                               mirrored(gaussianAt(truth, 1.0, 0.1, 0.1))}));
   testing::ScenarioConfig view;
   for (int k = 0; k < 10; ++k) {
     tracker_.update(k * 33000, Pose2(), testing::samplePoints(field_, truth, 0.0, view, k));
@@ -97,8 +86,8 @@ TEST_F(HypothesisTrackerTest, MirrorPairStaysAmbiguousUntilOwnHalfHint) {
 
 TEST_F(HypothesisTrackerTest, WrongHypothesisLosesWeightAndIsPruned) {
   const Pose2 truth(-2.0, 1.0, 0.4);
-  tracker_.applyHint(hint(HintKind::kResetTo,
-                          {gaussian(truth.x, truth.y, truth.theta), gaussian(1.0, -1.5, 2.0)}));
+  tracker_.applyHint(hint(HintKind::kResetTo, {gaussianAt(truth, 1.0, 0.1, 0.1),
+                                               gaussianAt(Pose2(1.0, -1.5, 2.0), 1.0, 0.1, 0.1)}));
   testing::ScenarioConfig view;
   for (int k = 0; k < 5; ++k) {
     tracker_.update(k * 33000, Pose2(), testing::samplePoints(field_, truth, 0.0, view, k));
@@ -109,7 +98,8 @@ TEST_F(HypothesisTrackerTest, WrongHypothesisLosesWeightAndIsPruned) {
 }
 
 TEST_F(HypothesisTrackerTest, OdometryJumpNanAndBackwardTimeNeverGiveNan) {
-  tracker_.applyHint(hint(HintKind::kResetTo, {gaussian(-1.0, 0.0, 0.0, 0.02, 0.02)}));
+  tracker_.applyHint(
+      hint(HintKind::kResetTo, {gaussianAt(Pose2(-1.0, 0.0, 0.0), 1.0, 0.02, 0.02)}));
   tracker_.update(0, Pose2(0.0, 0.0, 0.0), GroundPoints{});
   tracker_.update(33000, Pose2(0.01, 0.0, 0.0), GroundPoints{});
   EXPECT_NEAR(tracker_.hypotheses()[0].pose.mean.x, -0.99, 1e-9);
@@ -137,8 +127,7 @@ TEST_F(HypothesisTrackerTest, TenSecondsWithoutPoints) {
   testing::ScenarioConfig config;
   config.frames = 330;
   const auto frames = testing::makeScenario(field_, config);
-  const GaussianPose start = gaussian(frames[0].field_T_robot.x, frames[0].field_T_robot.y,
-                                      frames[0].field_T_robot.theta, 0.02, 0.02);
+  const GaussianPose start = gaussianAt(frames[0].field_T_robot, 1.0, 0.02, 0.02);
   // With odometry: uncertainty grows with the distance walked, the tracker keeps going.
   tracker_.applyHint(hint(HintKind::kResetTo, {start}));
   for (const auto& f : frames) tracker_.update(f.t_us, f.odometry, GroundPoints{});
@@ -161,8 +150,7 @@ TEST_F(HypothesisTrackerTest, TenSecondsWithoutPoints) {
 
 TEST_F(HypothesisTrackerTest, AsksForGlobalAtLowRateAndWhenObservationsDisagree) {
   const Pose2 truth(-2.0, 1.0, 0.4);
-  tracker_.applyHint(
-      hint(HintKind::kResetTo, {gaussian(truth.x, truth.y, truth.theta, 0.02, 0.02)}));
+  tracker_.applyHint(hint(HintKind::kResetTo, {gaussianAt(truth, 1.0, 0.02, 0.02)}));
   testing::ScenarioConfig view;
   int k = 0;
   for (; k < 30; ++k) {
@@ -173,7 +161,7 @@ TEST_F(HypothesisTrackerTest, AsksForGlobalAtLowRateAndWhenObservationsDisagree)
     tracker_.update(k * 33333, Pose2(), testing::samplePoints(field_, truth, 0.0, view, k));
   }
   EXPECT_TRUE(tracker_.needsGlobalHypotheses());  // periodic_global_s = 3 s passed
-  tracker_.injectHypotheses({gaussian(truth.x, truth.y, truth.theta)});
+  tracker_.injectHypotheses({gaussianAt(truth, 1.0, 0.1, 0.1)});
   EXPECT_FALSE(tracker_.needsGlobalHypotheses());
   // Kidnap: the same odometry, a different view. Disagreement for disagree_frames frames.
   const Pose2 elsewhere(2.5, -1.5, 2.5);
@@ -185,6 +173,56 @@ TEST_F(HypothesisTrackerTest, AsksForGlobalAtLowRateAndWhenObservationsDisagree)
   expectFinite(tracker_);
 }
 
+// Kidnap where the old pose still explains about half of the new view (rendered SPL recording
+// near the centre circle): the disagreement count never fires, the drop of the inlier share does.
+TEST_F(HypothesisTrackerTest, SuddenDropOfInlierShareAsksForGlobalAtOnce) {
+  const Pose2 truth(-2.0, 1.0, 0.4), elsewhere(2.5, -1.5, 2.5);
+  testing::ScenarioConfig view;
+  auto mixed = [&](int k) {  // the old view and 3/4 as many points of a new one
+    GroundPoints points = testing::samplePoints(field_, truth, 0.0, view, k);
+    const GroundPoints other = testing::samplePoints(field_, elsewhere, 0.0, view, 1000 + k);
+    const size_t n = std::min(other.points.size(), points.points.size() * 3 / 4);
+    points.points.insert(points.points.end(), other.points.begin(), other.points.begin() + n);
+    return points;
+  };
+  TrackerConfig without_detector;
+  without_detector.share_drop_alarm = 1e9;
+  HypothesisTracker old_rules(index_, without_detector);
+  for (HypothesisTracker* t : {&tracker_, &old_rules}) {
+    t->applyHint(hint(HintKind::kResetTo, {gaussianAt(truth, 1.0, 0.02, 0.02)}));
+    for (int k = 0; k < 30; ++k) {
+      t->update(k * 33333, Pose2(), testing::samplePoints(field_, truth, 0.0, view, k));
+      ASSERT_FALSE(t->needsGlobalHypotheses()) << k;
+    }
+  }
+  int k = 30;
+  for (; k < 34; ++k) {  // a third less explained: fires within four frames
+    tracker_.update(k * 33333, Pose2(), mixed(k));
+    old_rules.update(k * 33333, Pose2(), mixed(k));
+  }
+  const double share = tracker_.lastStats().best_inlier_share;
+  EXPECT_GT(share, TrackerConfig{}.disagree_inlier_share);
+  EXPECT_LT(share, 0.8);
+  EXPECT_TRUE(tracker_.needsGlobalHypotheses());
+  EXPECT_NE(tracker_.status(), TrackerStatus::kLost);  // not the disagreement count
+  EXPECT_FALSE(old_rules.needsGlobalHypotheses());
+  // A lasting change (say a robot in view that looks like lines): the expected share adapts and
+  // the requests stop well within the low-rate period.
+  int requests = 0, last_request = k;
+  for (; k < 110; ++k) {
+    if (tracker_.needsGlobalHypotheses()) {
+      ++requests;
+      last_request = k;
+      tracker_.injectHypotheses({gaussianAt(truth, 1.0, 0.05, 0.05)});
+    }
+    tracker_.update(k * 33333, Pose2(), mixed(k));
+  }
+  EXPECT_GE(requests, 1);
+  EXPECT_LT(last_request, 80);
+  RecordProperty("requests_during_lasting_change", requests);
+  expectFinite(tracker_);
+}
+
 TEST_F(HypothesisTrackerTest, DeterministicForTheSameInput) {
   testing::ScenarioConfig config;
   config.frames = 60;
@@ -192,9 +230,10 @@ TEST_F(HypothesisTrackerTest, DeterministicForTheSameInput) {
   auto run = [&]() {
     HypothesisTracker t(index_, TrackerConfig{});
     t.applyHint(hint(HintKind::kResetTo,
-                     {gaussian(frames[0].field_T_robot.x + 0.1, frames[0].field_T_robot.y,
-                               frames[0].field_T_robot.theta),
-                      gaussian(0.0, 0.0, 1.0)}));
+                     {gaussianAt(Pose2(frames[0].field_T_robot.x + 0.1, frames[0].field_T_robot.y,
+                                       frames[0].field_T_robot.theta),
+                                 1.0, 0.1, 0.1),
+                      gaussianAt(Pose2(0.0, 0.0, 1.0), 1.0, 0.1, 0.1)}));
     for (const auto& f : frames) t.update(f.t_us, f.odometry, f.points);
     return t.hypotheses();
   };

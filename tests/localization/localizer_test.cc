@@ -16,22 +16,9 @@ namespace {
 using testing::correctPose;
 using testing::estimateCorrect;
 using testing::estimateFinite;
+using testing::gaussianAt;
+using testing::hint;
 using testing::uprightCamera;
-
-GaussianPose gaussianAt(const Pose2& mean, double weight = 1.0) {
-  GaussianPose g;
-  g.mean = mean;
-  g.covariance = Eigen::Vector3d(0.01, 0.01, 0.003).asDiagonal();
-  g.weight = weight;
-  return g;
-}
-
-LocalizationHint hint(HintKind kind, std::vector<GaussianPose> poses = {}) {
-  LocalizationHint h;
-  h.kind = kind;
-  h.poses = std::move(poses);
-  return h;
-}
 
 class LocalizerTest : public ::testing::Test {
  protected:

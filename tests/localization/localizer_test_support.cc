@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "field_models/field_distance.h"
 
@@ -83,6 +84,22 @@ Pose3 uprightCamera() {
   camera.z = 0.5;
   camera.pitch = 0.2;
   return camera;
+}
+
+LocalizationHint hint(HintKind kind, std::vector<GaussianPose> poses) {
+  LocalizationHint h;
+  h.kind = kind;
+  h.poses = std::move(poses);
+  return h;
+}
+
+GaussianPose gaussianAt(const Pose2& mean, double weight, double sigma_m, double sigma_rad) {
+  GaussianPose g;
+  g.mean = mean;
+  g.covariance =
+      Eigen::Vector3d(sigma_m * sigma_m, sigma_m * sigma_m, sigma_rad * sigma_rad).asDiagonal();
+  g.weight = weight;
+  return g;
 }
 
 }  // namespace houghloc::testing

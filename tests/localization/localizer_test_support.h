@@ -26,6 +26,14 @@ bool estimateFinite(const LocalizationEstimate& estimate);
 /// Exact equality of two estimates (status, ids, ages, means, covariances, weights).
 bool sameEstimate(const LocalizationEstimate& a, const LocalizationEstimate& b);
 
+/// A hint of `kind` with `poses` (DESIGN §7).
+LocalizationHint hint(HintKind kind, std::vector<GaussianPose> poses = {});
+
+/// A Gaussian pose at `mean` with independent standard deviations: position sigma_m (m) in x and
+/// y, heading sigma_rad (rad).
+GaussianPose gaussianAt(const Pose2& mean, double weight = 1.0, double sigma_m = 0.1,
+                        double sigma_rad = 0.055);
+
 /// A walk like the tracking accuracy tests': figure eight scaled to the field, camera range
 /// scaled with the field's size.
 ScenarioConfig walkOn(const FieldModel& field, int frames, std::uint32_t seed);

@@ -74,6 +74,45 @@ TEST(PoseSolver, ParallelOnlyGivesOneDimensionalGaussians) {
   EXPECT_GT(none[0].covariance(0, 0), 50.0);
 }
 
+TEST(PoseSolver, LineCandidatesTryEveryShiftOfTheStrongestDirection) {
+  // Direction 1 (lines y = const) carries the seen line: each shift aligns it with one map line.
+  std::vector<std::vector<TranslationConstraint>> per_direction(2);
+  per_direction[0] = {{0, 0.0, 1.0, 6.0}};
+  per_direction[1] = {{1, M_PI / 2, 2.5, 20.0}, {1, M_PI / 2, -0.5, 20.0}, {1, M_PI / 2, 1.1, 9.0}};
+  const auto lines = lineCandidates(0.3, per_direction, PoseSolverConfig());
+  ASSERT_EQ(lines.size(), 3u);
+  const double y[3] = {2.5, -0.5, 1.1};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(lines[k].kind, HypothesisKind::kParallel);
+    EXPECT_NEAR(lines[k].field_T_robot.y, y[k], 1e-12);
+    EXPECT_NEAR(lines[k].field_T_robot.theta, 0.3, 1e-12);
+    EXPECT_NEAR(std::abs(lines[k].line_direction.x()), 1.0, 1e-12);
+  }
+  EXPECT_TRUE(lineCandidates(0.3, {{}, {}}, PoseSolverConfig()).empty());
+}
+
+TEST(Landmarks, CircleFromAShortArcOfALargeCircleButNotFromATangentLine) {
+  LandmarkConfig config;
+  // 0.75 rad of a 2 m circle (the MSL centre circle seen from afar) is accepted ...
+  WeightedPoints arc;
+  for (double a = -0.375; a <= 0.375 + 1e-9; a += 0.02) {
+    arc.points.push_back(Eigen::Vector2d(3.0, 0.5) +
+                         2.0 * Eigen::Vector2d(std::cos(a), std::sin(a)));
+    arc.weights.push_back(1.0);
+  }
+  const auto seen = fitCircle(arc, 2.0, config);
+  ASSERT_TRUE(seen.has_value());
+  EXPECT_LT((seen->center - Eigen::Vector2d(3.0, 0.5)).norm(), 0.05);
+  // ... but a straight 1.2 m line is not a 0.75 m circle, whose tangent stays within the band
+  // for 0.8 rad.
+  WeightedPoints line;
+  for (double y = -0.6; y <= 0.6 + 1e-9; y += 0.02) {
+    line.points.push_back(Eigen::Vector2d(2.0, y));
+    line.weights.push_back(1.0);
+  }
+  EXPECT_FALSE(fitCircle(line, 0.75, config).has_value());
+}
+
 TEST(Landmarks, FitsASingleCircleOfKnownRadius) {
   WeightedPoints pts;
   std::mt19937 rng(3);

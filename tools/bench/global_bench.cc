@@ -2,9 +2,12 @@
 //   locate() with 100 / 300 / 1000 points on the SPL and MSL maps;
 //   step 1 (HoughTransform) vs cv::HoughLinesPointSet on the same points;
 //   locate() vs the exhaustive grid search on the same frames, with success rates;
-// then a summary of time ratios and success rates side by side.
+// then a summary of time ratios and success rates side by side: min / median CPU time per
+// field x points (growth with points and with map size), grid-search and step-1 ratios.
+// `--benchmark_filter=NONE` prints the summary alone.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -177,48 +180,106 @@ double cpuSeconds() {
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-/// Side-by-side summary on the same frames (CPU time, so other load on the machine matters less).
+/// Mean CPU ms per locate() over all frames, repeated: min and median of the repetitions (the
+/// machine may be shared; the minimum is the least disturbed).
+struct Timing {
+  double min_ms = 0.0, median_ms = 0.0;
+  int ok = 0;
+};
+
+Timing timeLocate(const std::string& name, int points, int repetitions) {
+  const auto& fs = frames(name, points);
+  Timing out;
+  std::vector<double> ms;
+  for (int rep = 0; rep < repetitions; ++rep) {
+    double t = 0.0;
+    for (const Frame& f : fs) {
+      const double t0 = cpuSeconds();
+      const auto hs = localizer(name).locate(f.ground);
+      t += cpuSeconds() - t0;
+      if (rep > 0) continue;
+      for (const auto& h : hs) {
+        if (correct(h.field_T_robot, f.truth)) {
+          ++out.ok;
+          break;
+        }
+      }
+    }
+    ms.push_back(1e3 * t / fs.size());
+  }
+  std::sort(ms.begin(), ms.end());
+  out.min_ms = ms.front();
+  out.median_ms = ms[ms.size() / 2];
+  return out;
+}
+
+double lineLength(const FieldModel& f) {
+  double sum = 0.0;
+  for (const auto& s : f.segments) sum += s.length();
+  for (const auto& a : f.arcs) sum += a.length();
+  return sum;
+}
+
+/// Side-by-side summary on the same frames (CPU time, so other load on the machine matters less):
+/// how locate() grows with the number of points and with the map, and the ratios against the
+/// baselines (grid search for the whole, cv::HoughLinesPointSet for step 1).
 void printSummary() {
-  std::printf("\nsummary (kid-wide frames with two directions, %d per field, CPU time)\n", kFrames);
-  std::printf("%-5s %6s | %10s %8s | %10s %8s | %8s\n", "field", "points", "GHL ms", "GHL ok",
-              "grid ms", "grid ok", "speedup");
+  constexpr int kRepetitions = 7;
+  std::printf(
+      "\nsummary: kid-wide frames with two directions, %d per field; CPU ms per locate(),\n"
+      "min / median of %d repetitions over all frames\n",
+      kFrames, kRepetitions);
+  for (const std::string& name : kFields) {
+    const FieldModel& f = field(name);
+    std::printf("  %-4s carpet %.1f x %.1f m, %.0f m of lines and arcs, %zu segments, %zu arcs\n",
+                name.c_str(), 2.0 * f.outerHalfLength(), 2.0 * f.outerHalfWidth(), lineLength(f),
+                f.segments.size(), f.arcs.size());
+  }
+  std::printf("%-5s %6s | %7s %7s %6s %7s | %8s %6s %8s\n", "field", "points", "min ms", "med ms",
+              "ok", "vs 100", "grid ms", "ok", "speedup");
+  std::map<std::pair<std::string, int>, Timing> all;
   for (const std::string& name : kFields) {
     for (int n : {100, 300, 1000}) {
+      const Timing t = timeLocate(name, n, kRepetitions);
+      all[{name, n}] = t;
       const auto& fs = frames(name, n);
-      int ghl_ok = 0, grid_ok = 0;
-      double t_ghl = 0.0, t_grid = 0.0;
-      for (const Frame& f : fs) {
-        double t0 = cpuSeconds();
-        const auto hs = localizer(name).locate(f.ground);
-        t_ghl += cpuSeconds() - t0;
-        for (const auto& h : hs) {
-          if (correct(h.field_T_robot, f.truth)) {
-            ++ghl_ok;
-            break;
-          }
-        }
-        if (n != 300) continue;  // the grid search only on the 300-point frames
-        t0 = cpuSeconds();
-        const auto optima = gridSearch(name).locate(f.ground);
+      const double m = static_cast<double>(fs.size());
+      const double growth = t.min_ms / std::max(all[{name, 100}].min_ms, 1e-9);
+      if (n != 300) {
+        std::printf("%-5s %6d | %7.3f %7.3f %5.0f%% %6.2fx | %8s %6s %8s\n", name.c_str(), n,
+                    t.min_ms, t.median_ms, 100.0 * t.ok / m, growth, "-", "-", "-");
+        continue;
+      }
+      // The grid search once per frame (it takes 20-100 ms).
+      int grid_ok = 0;
+      double t_grid = 0.0;
+      for (const Frame& frame : fs) {
+        const double t0 = cpuSeconds();
+        const auto optima = gridSearch(name).locate(frame.ground);
         t_grid += cpuSeconds() - t0;
         for (const auto& o : optima) {
-          if (correct(o.field_T_robot, f.truth)) {
+          if (correct(o.field_T_robot, frame.truth)) {
             ++grid_ok;
             break;
           }
         }
       }
-      const double m = static_cast<double>(fs.size());
-      if (n == 300) {
-        std::printf("%-5s %6d | %10.3f %7.0f%% | %10.1f %7.0f%% | %7.0fx\n", name.c_str(), n,
-                    1e3 * t_ghl / m, 100.0 * ghl_ok / m, 1e3 * t_grid / m, 100.0 * grid_ok / m,
-                    t_grid / std::max(t_ghl, 1e-9));
-      } else {
-        std::printf("%-5s %6d | %10.3f %7.0f%% | %10s %8s | %8s\n", name.c_str(), n,
-                    1e3 * t_ghl / m, 100.0 * ghl_ok / m, "-", "-", "-");
-      }
+      const double grid_ms = 1e3 * t_grid / m;
+      std::printf("%-5s %6d | %7.3f %7.3f %5.0f%% %6.2fx | %8.1f %5.0f%% %7.0fx\n", name.c_str(), n,
+                  t.min_ms, t.median_ms, 100.0 * t.ok / m, growth, grid_ms, 100.0 * grid_ok / m,
+                  grid_ms / std::max(t.median_ms, 1e-9));
     }
   }
+  std::printf("map size, msl / spl (min ms):");
+  for (int n : {100, 300, 1000}) {
+    std::printf("  %d points %.2fx", n,
+                all[{"msl", n}].min_ms / std::max(all[{"spl", n}].min_ms, 1e-9));
+  }
+  const std::size_t cap = localizer("spl").config().max_points;
+  std::printf(
+      "\n(inputs above max_points = %zu are subsampled evenly before step 1, so 1000 "
+      "points cost about what %zu do)\n",
+      cap, cap);
   const auto& fs = frames("spl", 300);
   double t_ours = 0.0, t_cv = 0.0;
   for (int rep = 0; rep < 20; ++rep) {

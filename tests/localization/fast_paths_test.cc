@@ -1,0 +1,152 @@
+// The speed-ups of issue 6 must not change results: each fast path against the plain
+// computation it replaces, bit for bit where the code promises it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "field_models/distance_grid.h"
+#include "field_models/field_distance.h"
+#include "field_models/standard_fields.h"
+#include "localization/hough_transform.h"
+#include "localization/map_signature.h"
+#include "localization/pose_refinement.h"
+#include "localization/pose_scoring.h"
+
+namespace houghloc {
+namespace {
+
+class FastPathsTest : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FastPathsTest, DistanceBelowIsTheDistanceOrABoundAboveTheLimit) {
+  const FieldModel field = makeStandardField(GetParam());
+  const DistanceGrid grid(field);
+  std::mt19937 rng(5);
+  // Beyond the grid too (its margin is 0.5 m past the carpet).
+  std::uniform_real_distribution<double> x(-field.outerHalfLength() - 1.0,
+                                           field.outerHalfLength() + 1.0);
+  std::uniform_real_distribution<double> y(-field.outerHalfWidth() - 1.0,
+                                           field.outerHalfWidth() + 1.0);
+  int below = 0, skipped = 0;
+  for (int i = 0; i < 50000; ++i) {
+    const Eigen::Vector2d p(x(rng), y(rng));
+    const double limit = i % 2 ? 0.15 : 0.4;
+    const double d = grid.distance(p), fast = grid.distanceBelow(p, limit);
+    if (d < limit) {
+      ASSERT_EQ(fast, d) << p.transpose();  // bit for bit
+      ++below;
+    } else {
+      ASSERT_GE(fast, limit) << p.transpose();
+      ASSERT_LE(fast, d) << p.transpose();
+      skipped += fast != d;
+    }
+    // The lower bound holds for the exact distance, not only for the interpolated one.
+    ASSERT_LE(grid.lowerBound(p), nearestFeature(field, p).distance_m) << p.transpose();
+  }
+  EXPECT_GT(below, 1000);
+  EXPECT_GT(skipped, 10000);  // the block map answers most far points
+}
+
+TEST_P(FastPathsTest, RefinementWithTheGridSkipIsBitIdentical) {
+  const FieldModel field = makeStandardField(GetParam());
+  const MapSignature map(field);
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0.0, 0.02);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    // Points on the map seen from a pose near the field's corner region, plus clutter.
+    const Pose2 truth(u(rng) * field.outerHalfLength() * 0.7, u(rng) * field.outerHalfWidth() * 0.7,
+                      M_PI * u(rng));
+    const WeightedPoints samples = sampleMapLines(field, 0.05, true);
+    WeightedPoints points;
+    const Pose2 robot_T_field = truth.inverse();
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const Eigen::Vector2d p = robot_T_field.transform(samples.points[i]);
+      if (p.norm() > 4.0 || p.x() < 0.0) continue;
+      points.points.push_back(p + Eigen::Vector2d(noise(rng), noise(rng)));
+      points.weights.push_back(1.0);
+    }
+    for (int k = 0; k < 20; ++k) {
+      points.points.push_back(Eigen::Vector2d(4.0 * std::abs(u(rng)), 3.0 * u(rng)));
+      points.weights.push_back(0.5);
+    }
+    const Pose2 start(truth.x + 0.15 * u(rng), truth.y + 0.15 * u(rng),
+                      truth.theta + 0.05 * u(rng));
+    RefinementConfig config;
+    const Eigen::Vector2d frozen =
+        trial % 3 == 0 ? Eigen::Vector2d(1.0, 0.0) : Eigen::Vector2d(0, 0);
+    const RefinementResult plain = refinePose(points, start, map.features(), config, frozen);
+    const RefinementResult fast = refinePose(points, start, map, config, frozen);
+    EXPECT_EQ(plain.field_T_robot.x, fast.field_T_robot.x);
+    EXPECT_EQ(plain.field_T_robot.y, fast.field_T_robot.y);
+    EXPECT_EQ(plain.field_T_robot.theta, fast.field_T_robot.theta);
+    EXPECT_EQ(plain.rms_m, fast.rms_m);
+    EXPECT_EQ(plain.inlier_weight, fast.inlier_weight);
+    EXPECT_TRUE((plain.covariance.array() == fast.covariance.array()).all());
+    const Pose2 mean = refinePoseMean(points, start, map, config, frozen);
+    EXPECT_EQ(plain.field_T_robot.x, mean.x);
+    EXPECT_EQ(plain.field_T_robot.theta, mean.theta);
+  }
+}
+
+TEST_P(FastPathsTest, ScoringATranslationScanEqualsScoringEachPose) {
+  const FieldModel field = makeStandardField(GetParam());
+  const DistanceGrid grid(field);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  WeightedPoints points;
+  for (int i = 0; i < 90; ++i) {  // more than one batch of the scorer
+    points.points.push_back(Eigen::Vector2d(4.0 * std::abs(u(rng)), 3.0 * u(rng)));
+    points.weights.push_back(0.5 + std::abs(u(rng)));
+  }
+  const ScoringConfig config;
+  for (double theta : {0.3, -2.9, 3.5, 7.0}) {  // also headings that Pose2 normalises
+    std::vector<Eigen::Vector2d> ts;
+    for (double s = -field.outerHalfLength(); s <= field.outerHalfLength(); s += 0.1) {
+      ts.push_back(Eigen::Vector2d(s, 0.37 * s + 0.2 * u(rng)));
+    }
+    const std::vector<PoseScore> scan = scoreTranslations(points, theta, ts, grid, config);
+    ASSERT_EQ(scan.size(), ts.size());
+    double best = 0.0;
+    for (std::size_t k = 0; k < ts.size(); ++k) {
+      const PoseScore one = scorePose(points, Pose2(ts[k].x(), ts[k].y(), theta), grid, config);
+      ASSERT_EQ(scan[k].score, one.score) << k;
+      ASSERT_EQ(scan[k].inlier_share, one.inlier_share) << k;
+      best = std::max(best, one.score);
+    }
+    EXPECT_GT(best, 0.0);  // some poses put points on lines
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Fields, FastPathsTest, ::testing::Values("spl", "msl"));
+
+TEST(FastHoughTest, AddPointsEqualsAddPointOneByOne) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-5.0, 5.0);
+  WeightedPoints points;
+  for (int i = 0; i < 400; ++i) {
+    points.points.push_back(Eigen::Vector2d(u(rng), u(rng)));
+    points.weights.push_back(0.1 + std::abs(u(rng)));
+  }
+  // Beyond rho_max (the slow vote path) and invalid input (skipped by both).
+  points.points.push_back(Eigen::Vector2d(9.0, -8.0));
+  points.weights.push_back(1.0);
+  points.points.push_back(Eigen::Vector2d(std::numeric_limits<double>::quiet_NaN(), 1.0));
+  points.weights.push_back(1.0);
+  points.points.push_back(Eigen::Vector2d(1.0, 1.0));
+  points.weights.push_back(std::numeric_limits<double>::infinity());
+  HoughTransform batch(HoughConfig{}, 6.0), single(HoughConfig{}, 6.0);
+  batch.addPoints(points);
+  for (std::size_t k = 0; k < points.size(); ++k)
+    single.addPoint(points.points[k], points.weights[k]);
+  for (int c = 0; c < batch.numTheta(); ++c) {
+    for (int r = 0; r < batch.numRho(); ++r)
+      ASSERT_EQ(batch.at(c, r), single.at(c, r)) << c << " " << r;
+  }
+}
+
+}  // namespace
+}  // namespace houghloc
