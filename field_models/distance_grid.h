@@ -28,13 +28,7 @@ class DistanceGrid {
     const double gx = (p_field.x() - origin_.x()) * inv_resolution_;
     const double gy = (p_field.y() - origin_.y()) * inv_resolution_;
     if (gx >= 0.0 && gy >= 0.0 && gx < cols_ - 1.0 && gy < rows_ - 1.0) {
-      const int c0 = static_cast<int>(gx), r0 = static_cast<int>(gy);
-      const double fx = gx - c0, fy = gy - r0;
-      const float* row0 = &values_[static_cast<size_t>(r0) * cols_ + c0];
-      const float* row1 = row0 + cols_;
-      const double top = row0[0] + fx * (row0[1] - row0[0]);
-      const double bottom = row1[0] + fx * (row1[1] - row1[0]);
-      return top + fy * (bottom - top);
+      return interpolate(gx, gy, static_cast<int>(gx), static_cast<int>(gy));
     }
     return distance(p_field, nullptr);
   }
@@ -52,12 +46,7 @@ class DistanceGrid {
           kBlockUnitM *
           block_min_[static_cast<size_t>(r0 >> kBlockShift) * block_cols_ + (c0 >> kBlockShift)];
       if (bound >= limit_m) return bound;
-      const double fx = gx - c0, fy = gy - r0;
-      const float* row0 = &values_[static_cast<size_t>(r0) * cols_ + c0];
-      const float* row1 = row0 + cols_;
-      const double top = row0[0] + fx * (row0[1] - row0[0]);
-      const double bottom = row1[0] + fx * (row1[1] - row1[0]);
-      return top + fy * (bottom - top);
+      return interpolate(gx, gy, c0, r0);
     }
     return distance(p_field, nullptr);
   }
@@ -97,6 +86,15 @@ class DistanceGrid {
   bool empty() const { return values_.empty(); }
 
  private:
+  /// Bilinear value at grid coordinates (gx, gy) strictly inside the grid; (c0, r0) its cell.
+  double interpolate(double gx, double gy, int c0, int r0) const {
+    const double fx = gx - c0, fy = gy - r0;
+    const float* row0 = &values_[static_cast<size_t>(r0) * cols_ + c0];
+    const float* row1 = row0 + cols_;
+    const double top = row0[0] + fx * (row0[1] - row0[0]);
+    const double bottom = row1[0] + fx * (row1[1] - row1[0]);
+    return top + fy * (bottom - top);
+  }
   float node(int col, int row) const { return values_[static_cast<size_t>(row) * cols_ + col]; }
   void buildBlockMinima();
 

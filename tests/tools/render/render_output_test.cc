@@ -18,6 +18,8 @@ struct Case {
   bool along_line = false;  ///< walk along the halfway line (for the steep nao-bottom view)
 };
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.field << " / " << c.camera; }
+
 double luma(const cv::Vec3b& p) { return 0.114 * p[0] + 0.587 * p[1] + 0.299 * p[2]; }
 bool isGreen(const cv::Vec3b& p) { return p[1] > p[2] + 15 && p[1] > p[0] + 15; }
 /// White paint: bright and nearly grey. Judged by chroma rather than a fixed brightness, since
