@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "localization/gaussian_pose.h"
 #include "localization/global_hough_localizer.h"
 
 namespace houghloc {
@@ -190,8 +191,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
     bool done = false;
     for (const PoseHypothesis& s : scanned) {
       const Pose2& p = line.field_T_robot;
-      done =
-          done || sameLine(s, p) || (symmetric && sameLine(s, Pose2(-p.x, -p.y, p.theta + M_PI)));
+      done = done || sameLine(s, p) || (symmetric && sameLine(s, mirrored(p)));
     }
     if (done) continue;
     scanned.push_back(line);
@@ -199,11 +199,9 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
       out.push_back(h);
       if (!symmetric) continue;
       PoseHypothesis twin = h;  // the map is point-symmetric: the twin scores the same
-      const Pose2& p = h.field_T_robot;
-      twin.field_T_robot = Pose2(-p.x, -p.y, p.theta + M_PI);
+      twin.field_T_robot = mirrored(h.field_T_robot);
       twin.line_direction = -h.line_direction;
-      twin.covariance.topRightCorner<2, 1>() *= -1.0;
-      twin.covariance.bottomLeftCorner<1, 2>() *= -1.0;
+      twin.covariance = mirroredCovariance(h.covariance);
       out.push_back(twin);
     }
   }

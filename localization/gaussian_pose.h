@@ -23,13 +23,18 @@ struct GaussianPose {
 /// The point-symmetric twin (-x, -y, theta + pi) of a pose on a point-symmetric field.
 inline Pose2 mirrored(const Pose2& pose) { return Pose2(-pose.x, -pose.y, pose.theta + M_PI); }
 
-/// Mirror of a Gaussian: the Jacobian diag(-1, -1, 1) flips the sign of the x-theta and y-theta
-/// covariances and keeps the rest.
+/// Covariance of the mirrored pose: the Jacobian diag(-1, -1, 1) flips the sign of the x-theta
+/// and y-theta covariances and keeps the rest.
+inline Eigen::Matrix3d mirroredCovariance(const Eigen::Matrix3d& covariance) {
+  const Eigen::Vector3d flip(-1.0, -1.0, 1.0);
+  return flip.asDiagonal() * covariance * flip.asDiagonal();
+}
+
+/// Mirror of a Gaussian (mean and covariance).
 inline GaussianPose mirrored(const GaussianPose& pose) {
   GaussianPose out = pose;
   out.mean = mirrored(pose.mean);
-  const Eigen::Vector3d flip(-1.0, -1.0, 1.0);
-  out.covariance = flip.asDiagonal() * pose.covariance * flip.asDiagonal();
+  out.covariance = mirroredCovariance(pose.covariance);
   return out;
 }
 

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "localization/gaussian_pose.h"
+
 namespace houghloc {
 namespace {
 
@@ -33,8 +35,7 @@ std::vector<PoseHypothesis> selectHypotheses(const std::vector<PoseHypothesis>& 
   std::vector<std::size_t> chosen;
   for (std::size_t i = 0; i < merged.size() && chosen.size() < max; ++i) {
     PoseHypothesis twin = merged[i];
-    const Pose2& p = twin.field_T_robot;
-    twin.field_T_robot = Pose2(-p.x, -p.y, p.theta + M_PI);
+    twin.field_T_robot = mirrored(twin.field_T_robot);
     bool represented = false;
     for (std::size_t k : chosen) {
       // A full pose is not represented by a 1-D hypothesis on its line (it says where).

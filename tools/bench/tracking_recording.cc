@@ -5,9 +5,9 @@
 #include <filesystem>
 
 #include "field_models/distance_grid.h"
-#include "localization/localizer.h"
 #include "tools/bench/mcl_baseline.h"
 #include "tools/offline/localization_run.h"
+#include "tools/offline/mode_full.h"
 #include "tools/offline/vision_stage.h"
 
 namespace houghloc::bench {
@@ -36,24 +36,14 @@ RecordedRun loadRecordedRun(const std::string& dir) {
 
 RunOutput runLocalizer(const RecordedRun& run) {
   const OfflineContext& context = run.context;
-  Localizer localizer(*context.field, context.localizer_config);
+  FullModeLocalizer localizer(context);
   RunOutput out;
-  size_t next_hint = 0;
   for (size_t k = 0; k < run.points.size(); ++k) {
     const FrameRecord& frame = context.recording.frames[context.first_frame + k];
-    // As mode_full.cc: hints up to this frame's time, then the frame; the hint is timed too.
-    const double t0 = cpuNowUs();
-    while (next_hint < context.hints.size() && context.hints[next_hint].t_us <= frame.t_us) {
-      localizer.applyHint(context.hints[next_hint++]);
-    }
-    const LocalizationEstimate estimate =
-        localizer.process(frame.t_us, frame.odometry, {frame.robot_T_camera}, run.points[k]);
+    const double t0 = cpuNowUs();  // the hints due are applied and timed with the frame
+    const LocalizationEstimate estimate = localizer.process(frame, run.points[k]);
     out.cpu_us.push_back(cpuNowUs() - t0);
-    FrameEstimate e;
-    e.t_us = frame.t_us;
-    e.status = trackerStatusName(estimate.status);
-    for (const EstimateHypothesis& h : estimate.hypotheses) e.hypotheses.push_back(h.pose);
-    out.estimates.push_back(std::move(e));
+    out.estimates.push_back(toFrameEstimate(frame.t_us, estimate));
   }
   return out;
 }

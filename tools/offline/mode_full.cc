@@ -2,32 +2,41 @@
 
 #include <chrono>
 
-#include "localization/localizer.h"
 #include "tools/offline/localization_run.h"
 
 namespace houghloc {
 
+FullModeLocalizer::FullModeLocalizer(const OfflineContext& context)
+    : context_(context), localizer_(requireField(context), context.localizer_config) {}
+
+LocalizationEstimate FullModeLocalizer::process(const FrameRecord& frame,
+                                                const GroundPoints& points) {
+  // Hints take effect at their time: all of those up to this frame's time, in order.
+  while (next_hint_ < context_.hints.size() && context_.hints[next_hint_].t_us <= frame.t_us) {
+    localizer_.applyHint(context_.hints[next_hint_++]);
+  }
+  return localizer_.process(frame.t_us, frame.odometry, {frame.robot_T_camera}, points);
+}
+
+FrameEstimate toFrameEstimate(std::int64_t t_us, const LocalizationEstimate& estimate) {
+  FrameEstimate out;
+  out.t_us = t_us;
+  out.status = trackerStatusName(estimate.status);
+  for (const EstimateHypothesis& h : estimate.hypotheses) out.hypotheses.push_back(h.pose);
+  return out;
+}
+
 int runFull(const OfflineContext& context) {
-  Localizer localizer(requireField(context), context.localizer_config);
-  size_t next_hint = 0;
+  FullModeLocalizer localizer(context);
   const LocalizationStep step = [&](const VisionFrame& v) {
     LocalizationStepResult r;
     const auto start = std::chrono::steady_clock::now();
-    // Hints take effect at their time: all of those up to this frame's time, in order.
-    while (next_hint < context.hints.size() && context.hints[next_hint].t_us <= v.frame->t_us) {
-      localizer.applyHint(context.hints[next_hint++]);
-    }
-    const LocalizationEstimate estimate = localizer.process(
-        v.frame->t_us, v.frame->odometry, {v.frame->robot_T_camera}, v.result.ground);
+    const LocalizationEstimate estimate = localizer.process(*v.frame, v.result.ground);
     r.localization_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     r.global_ms = estimate.global_ms;
     r.global_ran = estimate.global_ran;
-    r.estimate.t_us = v.frame->t_us;
-    r.estimate.status = trackerStatusName(estimate.status);
-    for (const EstimateHypothesis& h : estimate.hypotheses) {
-      r.estimate.hypotheses.push_back(h.pose);
-    }
+    r.estimate = toFrameEstimate(v.frame->t_us, estimate);
     return r;
   };
   return runLocalizationMode(context, "houghloc-offline", false, step);

@@ -25,9 +25,6 @@ bool isStandardField(const std::string& name) {
   return false;
 }
 
-/// Not a single preset: nao-top and nao-bottom taking turns (RenderJob::rig).
-constexpr const char* kNaoBothCameras = "nao";
-
 bool isPreset(const std::string& name) {
   for (const std::string& n : cameraPresetNames()) {
     if (n == name) return true;
@@ -54,14 +51,9 @@ void resolveCamera(const std::string& camera_arg, const Scenario& s,
                    const std::string& scenario_file, RenderJob& job) {
   const std::string name = !camera_arg.empty() ? camera_arg : s.camera;
   if (name.empty()) throw std::runtime_error("no camera: give --camera PRESET|camera.yaml");
-  if (name == kNaoBothCameras) {
+  if (name == kNaoCameraRig) {
     // A NAO reads its top and bottom camera in turn; the camera column tells them apart.
-    for (const char* id : {"nao-top", "nao-bottom"}) {
-      const CameraPreset preset = cameraPreset(id);
-      job.rig.push_back({id, preset.intrinsics, preset.robot_T_camera});
-    }
-    job.intrinsics = job.rig.front().intrinsics;
-    job.mount = job.rig.front().mount;
+    useNaoCameraRig(&job);
     if (s.camera_mount)
       throw std::runtime_error("camera_mount cannot be combined with --camera nao");
     return;
@@ -76,7 +68,7 @@ void resolveCamera(const std::string& camera_arg, const Scenario& s,
       std::string known;
       for (const std::string& n : cameraPresetNames()) known += " " + n;
       throw std::runtime_error("--camera: '" + name + "' is neither a preset nor a file (presets:" +
-                               known + ", " + kNaoBothCameras + ")");
+                               known + ", " + kNaoCameraRig + ")");
     }
     job.intrinsics = loadCameraYaml(path);
     job.mount = cameraPreset("nao-top").robot_T_camera;  // unless the scenario says otherwise

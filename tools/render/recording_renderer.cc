@@ -17,6 +17,7 @@
 #include "tools/render/sensor_effects.h"
 #include "tools/render/trajectory.h"
 #include "tools/render/visibility.h"
+#include "vision/camera_presets.h"
 
 namespace houghloc {
 namespace {
@@ -105,6 +106,16 @@ void writeHeaderIfMissing(const std::filesystem::path& path, const char* header)
 }
 
 }  // namespace
+
+void useNaoCameraRig(RenderJob* job) {
+  job->rig.clear();
+  for (const char* id : {"nao-top", "nao-bottom"}) {
+    const CameraPreset preset = cameraPreset(id);
+    job->rig.push_back({id, preset.intrinsics, preset.robot_T_camera});
+  }
+  job->intrinsics = job->rig.front().intrinsics;
+  job->mount = job->rig.front().mount;
+}
 
 void renderRecording(const RenderJob& job, const RenderProgress& progress) {
   const Scenario& sc = job.scenario;

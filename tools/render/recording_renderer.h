@@ -31,6 +31,13 @@ struct RenderJob {
   std::string out_dir;
 };
 
+/// The camera name that selects the NAO pair below (`houghloc-render --camera nao`).
+constexpr const char* kNaoCameraRig = "nao";
+
+/// Makes the job a NAO's: its top and bottom camera (presets nao-top, nao-bottom) taking turns,
+/// intrinsics and mount those of the top camera.
+void useNaoCameraRig(RenderJob* job);
+
 /// Called after each frame with (frames done, total).
 using RenderProgress = std::function<void(int, int)>;
 

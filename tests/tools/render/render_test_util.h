@@ -15,15 +15,13 @@ inline RenderJob testJob(const std::string& field, const std::string& camera,
                          const std::string& folder) {
   RenderJob job;
   job.field = makeStandardField(field);
-  if (camera == "nao") {
-    for (const char* id : {"nao-top", "nao-bottom"}) {
-      const CameraPreset preset = cameraPreset(id);
-      job.rig.push_back({id, preset.intrinsics, preset.robot_T_camera});
-    }
+  if (camera == kNaoCameraRig) {
+    useNaoCameraRig(&job);
+  } else {
+    const CameraPreset preset = cameraPreset(camera);
+    job.intrinsics = preset.intrinsics;
+    job.mount = preset.robot_T_camera;
   }
-  const CameraPreset preset = cameraPreset(camera == "nao" ? "nao-top" : camera);
-  job.intrinsics = preset.intrinsics;
-  job.mount = preset.robot_T_camera;
   job.out_dir = std::string(HOUGHLOC_BINARY_DIR) + "/test_renders/" + folder;
   std::filesystem::remove_all(job.out_dir);
   return job;
