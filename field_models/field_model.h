@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
 
@@ -38,5 +39,11 @@ struct FeatureRef {
 
 /// Human-readable name of a feature for messages, e.g. "segments[3]".
 std::string describeFeature(const FeatureRef& feature);
+
+/// Distance from `origin` along the unit `direction` to the border of the rectangle
+/// |x| <= half_x, |y| <= half_y (e.g. the carpet, outerHalfLength() x outerHalfWidth(), field
+/// frame); 0 when origin lies outside it.
+double rangeToRectangle(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction,
+                        double half_x, double half_y);
 
 }  // namespace houghloc

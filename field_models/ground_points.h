@@ -17,6 +17,16 @@ struct GroundPoint {
 /// A closed polygon on the ground in the robot frame (m), vertices in order.
 using GroundPolygon = std::vector<Eigen::Vector2d>;
 
+/// Where a camera saw the green carpet end (the field boundary) in one image column, projected
+/// to the ground. Known to a few pixels in the image, so along the viewing ray to
+/// range_sigma_m, which grows with the square of the range; something standing on the field
+/// (a robot, a referee) can make it nearer than the carpet's edge, never farther.
+struct FieldEdgePoint {
+  Eigen::Vector2d p_robot = Eigen::Vector2d::Zero();  ///< m, robot frame
+  double range_sigma_m = 0.0;                         ///< 1 sigma along the ray from the robot
+  int camera_id = 0;
+};
+
 /// Everything one frame's vision says about the ground: the line points, and the part of the
 /// ground the cameras actually saw (field boundary and image border projected to the ground),
 /// which lets localization use negative evidence (lines expected there but not seen).
@@ -24,6 +34,9 @@ struct GroundPoints {
   std::int64_t t_us = 0;
   std::vector<GroundPoint> points;
   std::vector<GroundPolygon> visible_regions;  ///< one per camera; empty when unknown
+  /// The carpet's edge at any range (the visible regions stop at the points' maximum range);
+  /// empty when not measured.
+  std::vector<FieldEdgePoint> field_edge;
 
   std::size_t size() const { return points.size(); }
   bool empty() const { return points.empty(); }

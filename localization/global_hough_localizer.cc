@@ -20,6 +20,8 @@ constexpr int kFirstRoundShare = 4;
 constexpr std::size_t kScanPoints = 30;
 // Gauss-Newton iterations of the coarse stage (on the pre-score subsample).
 constexpr int kCoarseIterations = 6;
+// Steps per side of the fine rotation scan about a landmark, in tenths of the coarse step.
+constexpr int kFineScanSteps = 10;
 
 /// At most config.max_hypotheses of the merged, sorted hypotheses. On a point-symmetric map a
 /// pose and its twin (-x, -y, theta + pi) explain every frame equally well, so when there are
@@ -62,6 +64,7 @@ GlobalHoughLocalizer::GlobalHoughLocalizer(const FieldModel& field, const Global
 std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& frame) const {
   const WeightedPoints points = preparePoints(frame);
   if (!hasLineSupport(points)) return {};
+  const VisibilityEvidence evidence(frame, points, config_.negative);
   const HoughTransform sensor = sensorTransform(points);                             // step 1
   const std::vector<OrientationCandidate> headings = orientationCandidates(sensor);  // step 2
   if (headings.empty()) return {};
@@ -77,7 +80,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
       }
     }
   }
-  for (PoseHypothesis& h : landmarkPoses(points, headings)) {  // beyond the paper
+  for (PoseHypothesis& h : landmarkPoses(points, headings, &evidence)) {  // beyond the paper
     if (onCarpet(h.field_T_robot)) candidates.push_back(h);
   }
   // Candidates number in the hundreds and are large structs: move, and free them at once (on
@@ -98,7 +101,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
   // best few times `keep` are scored with all pre-score points, then pruned by segment extents.
   const WeightedPoints few = subsamplePoints(points, config_.prescore_points);
   if (located.size() > static_cast<std::size_t>(kFirstRoundShare * config_.pruning.keep)) {
-    scoreCandidates(located, subsamplePoints(points, config_.prescore_points / 4));
+    scoreCandidates(located, subsamplePoints(points, config_.prescore_points / 4), &evidence);
     // Sort indices, not the structs; same order as a stable sort of the candidates.
     std::vector<std::size_t> order(located.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -111,10 +114,9 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
     for (std::size_t k = 0; k < kept; ++k) best.push_back(std::move(located[order[k]]));
     located.swap(best);
   }
-  scoreCandidates(located, few);
+  scoreCandidates(located, few, &evidence);
   located = pruneCandidates(located, config_.pruning);
-  located = convergeCandidates(located, few);
-  const VisibilityEvidence evidence(frame, points, config_.negative);
+  located = convergeCandidates(located, few, evidence);
   std::vector<PoseHypothesis> refined;
   int line_scans = 0;
   const WeightedPoints fine = subsamplePoints(points, config_.refine_points);
@@ -205,13 +207,14 @@ std::vector<std::vector<TranslationConstraint>> GlobalHoughLocalizer::translatio
 }
 
 std::vector<PoseHypothesis> GlobalHoughLocalizer::landmarkPoses(
-    const WeightedPoints& points, const std::vector<OrientationCandidate>& headings) const {
+    const WeightedPoints& points, const std::vector<OrientationCandidate>& headings,
+    const VisibilityEvidence* evidence) const {
   std::vector<PoseHypothesis> out;
   const WeightedPoints few = subsamplePoints(points, kScanPoints);
   auto append = [&](const Eigen::Vector2d& p_robot, const Eigen::Vector2d& p_field,
                     HypothesisSource source, double support) {
     std::vector<OrientationCandidate> all = headings;
-    for (const auto& h : scanHeadings(p_robot, p_field, few)) all.push_back(h);
+    for (const auto& h : scanHeadings(p_robot, p_field, few, evidence)) all.push_back(h);
     for (auto& h : landmarkCandidates(p_robot, p_field, all, source, support)) out.push_back(h);
   };
   if (config_.use_circle) {
@@ -236,17 +239,19 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::landmarkPoses(
 }
 
 std::vector<OrientationCandidate> GlobalHoughLocalizer::scanHeadings(
-    const Eigen::Vector2d& p_robot, const Eigen::Vector2d& p_field,
-    const WeightedPoints& points) const {
+    const Eigen::Vector2d& p_robot, const Eigen::Vector2d& p_field, const WeightedPoints& points,
+    const VisibilityEvidence* evidence) const {
   // Rotations about the landmark: p_field = R(theta) p_robot + t keeps the landmark in place.
+  auto scoreAt = [&](double theta) {
+    const Eigen::Vector2d t = p_field - Eigen::Rotation2Dd(theta) * p_robot;
+    const Pose2 pose(t.x(), t.y(), theta);
+    return scorePose(points, pose, map_.grid(), config_.scoring).score -
+           (evidence ? evidence->edgePenalty(pose, map_.field()) : 0.0);
+  };
   const int n = std::max(
       8, static_cast<int>(std::lround(2.0 * M_PI / config_.landmarks.heading_scan_step_rad)));
   std::vector<double> score(n);
-  for (int k = 0; k < n; ++k) {
-    const double theta = 2.0 * M_PI * k / n;
-    const Eigen::Vector2d t = p_field - Eigen::Rotation2Dd(theta) * p_robot;
-    score[k] = scorePose(points, Pose2(t.x(), t.y(), theta), map_.grid(), config_.scoring).score;
-  }
+  for (int k = 0; k < n; ++k) score[k] = scoreAt(2.0 * M_PI * k / n);
   std::vector<OrientationCandidate> maxima;
   for (int k = 0; k < n; ++k) {
     const double prev = score[(k + n - 1) % n], next = score[(k + 1) % n];
@@ -259,11 +264,26 @@ std::vector<OrientationCandidate> GlobalHoughLocalizer::scanHeadings(
   if (static_cast<int>(maxima.size()) > config_.landmarks.heading_scan_maxima) {
     maxima.resize(config_.landmarks.heading_scan_maxima);
   }
+  // A lone arc leaves the rotation to the field edge, whose cost varies smoothly: place each
+  // maximum between its neighbours at a tenth of the step (far from the landmark a 1 deg step
+  // moves the robot by more than the 0.1 m a pose may be off).
+  if (evidence && !evidence->edgeEmpty()) {
+    const double step = 2.0 * M_PI / n;
+    for (OrientationCandidate& m : maxima) {
+      const double centre = m.theta_rad;
+      for (int k = -kFineScanSteps; k <= kFineScanSteps; ++k) {
+        const double theta = centre + step * k / kFineScanSteps;
+        const double s = k == 0 ? m.correlation : scoreAt(theta);
+        if (s > m.correlation) m = {normalizeAngle(theta), s};
+      }
+    }
+  }
   return maxima;
 }
 
 std::vector<PoseHypothesis> GlobalHoughLocalizer::convergeCandidates(
-    std::vector<PoseHypothesis> candidates, const WeightedPoints& few) const {
+    std::vector<PoseHypothesis> candidates, const WeightedPoints& few,
+    const VisibilityEvidence& evidence) const {
   // Gauss-Newton on the subsample first: candidates from different Hough peaks often converge
   // to the same optimum, and only distinct optima need the full refinement.
   RefinementConfig coarse = config_.refinement;
@@ -274,7 +294,8 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::convergeCandidates(
     const Eigen::Vector2d frozen =
         c.kind == HypothesisKind::kParallel ? c.line_direction : Eigen::Vector2d::Zero();
     c.field_T_robot = refinePoseMean(few, c.field_T_robot, map_, coarse, frozen);
-    c.score = scorePose(few, c.field_T_robot, map_.grid(), config_.scoring).score;
+    c.score = scorePose(few, c.field_T_robot, map_.grid(), config_.scoring).score -
+              evidence.edgePenalty(c.field_T_robot, map_.field());
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const auto& a, const auto& b) { return a.score > b.score; });
@@ -293,10 +314,11 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::convergeCandidates(
 }
 
 void GlobalHoughLocalizer::scoreCandidates(std::vector<PoseHypothesis>& candidates,
-                                           const WeightedPoints& points) const {
+                                           const WeightedPoints& points,
+                                           const VisibilityEvidence* evidence) const {
   for (PoseHypothesis& c : candidates) {
     const PoseScore s = scorePose(points, c.field_T_robot, map_.grid(), config_.scoring);
-    c.score = s.score;
+    c.score = s.score - (evidence ? evidence->edgePenalty(c.field_T_robot, map_.field()) : 0.0);
     c.inlier_share = s.inlier_share;
   }
 }

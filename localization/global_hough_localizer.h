@@ -34,11 +34,17 @@ class GlobalHoughLocalizer {
   /// Step 3: constraints per dominant map direction for one heading.
   std::vector<std::vector<TranslationConstraint>> translationConstraints(
       const WeightedPoints& points, double theta_r) const;
-  /// Beyond the paper: poses from the centre circle and the penalty marks.
-  std::vector<PoseHypothesis> landmarkPoses(
-      const WeightedPoints& points, const std::vector<OrientationCandidate>& headings) const;
-  /// Step 4 scoring: score and inlier share of every candidate against the whole map.
-  void scoreCandidates(std::vector<PoseHypothesis>& candidates, const WeightedPoints& points) const;
+  /// Beyond the paper: poses from the centre circle and the penalty marks. With `evidence`, the
+  /// rotations about a landmark are ranked with the field edge too (a lone arc of the circle
+  /// fits every rotation about its centre; the carpet's edge does not).
+  std::vector<PoseHypothesis> landmarkPoses(const WeightedPoints& points,
+                                            const std::vector<OrientationCandidate>& headings,
+                                            const VisibilityEvidence* evidence = nullptr) const;
+  /// Step 4 scoring: score and inlier share of every candidate against the whole map, minus the
+  /// field-edge penalty when `evidence` is given (cheap; the full negative evidence comes with
+  /// the refinement).
+  void scoreCandidates(std::vector<PoseHypothesis>& candidates, const WeightedPoints& points,
+                       const VisibilityEvidence* evidence = nullptr) const;
   /// Step 4 refinement of one survivor (after convergeCandidates, which runs the coarse
   /// iterations): Gauss-Newton, observability (kParallel when only parallel
   /// lines constrain it; then a scan along the lines places the mean), covariance, final score
@@ -74,12 +80,14 @@ class GlobalHoughLocalizer {
   /// Coarse Gauss-Newton of every pruned candidate on the subsample `few`; keeps one of each
   /// group that converged to the same pose, best subsample score first.
   std::vector<PoseHypothesis> convergeCandidates(std::vector<PoseHypothesis> candidates,
-                                                 const WeightedPoints& few) const;
+                                                 const WeightedPoints& few,
+                                                 const VisibilityEvidence& evidence) const;
   /// Headings (best local maxima of the score) for rotations of the view about a landmark seen
   /// at p_robot and mapped to p_field.
   std::vector<OrientationCandidate> scanHeadings(const Eigen::Vector2d& p_robot,
                                                  const Eigen::Vector2d& p_field,
-                                                 const WeightedPoints& points) const;
+                                                 const WeightedPoints& points,
+                                                 const VisibilityEvidence* evidence) const;
 
   GlobalHoughConfig config_;
   MapSignature map_;

@@ -28,6 +28,7 @@ VisibilityEvidence::VisibilityEvidence(const GroundPoints& frame, const Weighted
     if (valid) polygons.push_back(poly);
   }
   if (polygons.empty()) return;
+  edge_ = FieldEdgeEvidence(frame, config.field_edge);
   rasterise(polygons);
   // Mark cells within seen_radius_m of a point; count the occupied ones for the line length.
   const int reach = static_cast<int>(std::ceil(config.seen_radius_m / config.raster_m));
@@ -196,10 +197,17 @@ double VisibilityEvidence::greenOutsideCarpet(const Pose2& field_T_robot,
   return outside * green_cell_area_;
 }
 
+double VisibilityEvidence::edgePenalty(const Pose2& field_T_robot, const FieldModel& field) const {
+  if (empty_ || edge_.empty()) return 0.0;
+  return density_ *
+         edge_.penaltyMetres(field_T_robot, field.outerHalfLength(), field.outerHalfWidth());
+}
+
 double VisibilityEvidence::penalty(const Pose2& field_T_robot, const MapSignature& map) const {
   if (empty_) return 0.0;
   return density_ * (config_.line_weight * unseenLineLength(field_T_robot, map) +
-                     config_.outside_weight * greenOutsideCarpet(field_T_robot, map.field()));
+                     config_.outside_weight * greenOutsideCarpet(field_T_robot, map.field())) +
+         edgePenalty(field_T_robot, map.field());
 }
 
 }  // namespace houghloc

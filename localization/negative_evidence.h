@@ -5,6 +5,7 @@
 
 #include "field_models/ground_points.h"
 #include "field_models/pose2.h"
+#include "localization/field_edge_evidence.h"
 #include "localization/hough_transform.h"
 #include "localization/map_signature.h"
 
@@ -22,6 +23,7 @@ struct NegativeEvidenceConfig {
   double outside_margin_m = 0.3;  ///< green up to this far beyond the carpet is tolerated
   double green_spacing_m = 0.25;  ///< lattice spacing of the visible-region samples
   double raster_m = 0.1;          ///< cell of the rasterised visible region and seen points
+  FieldEdgeConfig field_edge;     ///< the carpet's edge at long range (GroundPoints::field_edge)
 };
 
 /// The per-frame part of the negative evidence: the visible region and where points were seen.
@@ -31,13 +33,18 @@ class VisibilityEvidence {
                      const NegativeEvidenceConfig& config);
 
   bool empty() const { return empty_; }
+  /// True when the frame has no usable field-edge samples.
+  bool edgeEmpty() const { return empty_ || edge_.empty(); }
   /// Point weight per metre of seen line (converts lengths into the score's units).
   double pointDensity() const { return density_; }
   /// Metres of map line predicted at least margin_m inside the visible region without a point.
   double unseenLineLength(const Pose2& field_T_robot, const MapSignature& map) const;
   /// Area (m^2) of the visible region that the pose puts beyond the carpet plus outside_margin_m.
   double greenOutsideCarpet(const Pose2& field_T_robot, const FieldModel& field) const;
-  /// Penalty in point weight: density * (line_weight * unseen + outside_weight * green area).
+  /// Penalty in point weight of the field-edge samples alone (cheap: a few ray casts).
+  double edgePenalty(const Pose2& field_T_robot, const FieldModel& field) const;
+  /// Penalty in point weight: density * (line_weight * unseen + outside_weight * green area)
+  /// plus edgePenalty().
   double penalty(const Pose2& field_T_robot, const MapSignature& map) const;
 
  private:
@@ -45,6 +52,7 @@ class VisibilityEvidence {
 
   NegativeEvidenceConfig config_;
   bool empty_ = true;
+  FieldEdgeEvidence edge_;
   Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
   int cols_ = 0, rows_ = 0;
   /// Per cell: bit 0 inside the region, bit 1 inside with margin, bit 2 near a seen point.

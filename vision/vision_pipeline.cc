@@ -103,12 +103,16 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   }
   diag.pose_correction_rad = {refined.roll - robot_T_camera.roll,
                               refined.pitch - robot_T_camera.pitch};
+  diag.pose_correction_estimate_rad = corrector_.estimate();
+  diag.pose_correction_sigma_rad = corrector_.estimateSigma();
   diag.time_features_ms = msSince(&step);
 
   result.ground.points = projectSpots(rays, result.robot_T_camera_used, camera_id_,
                                       config_.projection, &diag.projection_stats);
   GroundPolygon region = visibleRegion(camera_, result.boundary, config_.projection);
   if (!region.empty()) result.ground.visible_regions.push_back(std::move(region));
+  result.ground.field_edge =
+      fieldEdgePoints(camera_, result.boundary, start_rows, camera_id_, config_.field_edge);
   diag.time_project_ms += msSince(&step);
   diag.time_total_ms = msSince(&start);
   return result;

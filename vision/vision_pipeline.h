@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "vision/camera_pose_corrector.h"
 #include "vision/field_boundary.h"
 #include "vision/field_color.h"
+#include "vision/field_edge.h"
 #include "vision/ground_projection.h"
 #include "vision/horizon.h"
 #include "vision/line_segments.h"
@@ -29,6 +31,7 @@ struct VisionConfig {
   ScanGridConfig scan_grid;
   LineSpotConfig spots;
   GroundProjectionConfig projection;
+  FieldEdgeSamplingConfig field_edge;
   LineSegmentConfig segments;
   CameraPoseCorrectionConfig pose_correction;
 };
@@ -42,6 +45,11 @@ struct VisionDiagnostics {
   int dropped_near_boundary = 0;  ///< spots within min_boundary_gap_m of the field boundary
   bool pose_correction_updated = false;
   Eigen::Vector2d pose_correction_rad = Eigen::Vector2d::Zero();  ///< (roll, pitch) applied
+  /// The corrector's estimate before its significance gate, and its standard deviation (rad;
+  /// infinite before the first solve).
+  Eigen::Vector2d pose_correction_estimate_rad = Eigen::Vector2d::Zero();
+  Eigen::Vector2d pose_correction_sigma_rad =
+      Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
   double time_total_ms = 0.0;
   double time_color_ms = 0.0;     ///< conversion, horizon, field colour, boundary
   double time_spots_ms = 0.0;     ///< width model, scan grid, spot detection

@@ -45,6 +45,14 @@ void printSummary(const RunStats& s, const std::optional<VisionMetrics>& metrics
     std::printf("  %.0f-%.0f m    %8ld %10.4f %8.4f %10.4f m %10.4f m\n", b.min_m, b.max_m,
                 b.points, b.precision, b.recall, b.median_error_m, b.p95_error_m);
   }
+  const FieldEdgeMetrics& e = metrics->field_edge;
+  if (e.samples > 0) {
+    std::printf(
+        "  field edge: %ld samples, median error %.3f m (%.2f sigma), within 3 sigma %.3f, "
+        "nearer %.3f, farther %.3f\n",
+        e.samples, e.median_abs_error_m, e.median_abs_error_sigmas, e.within_3_sigma,
+        e.nearer_share, e.farther_share);
+  }
 }
 
 }  // namespace

@@ -77,6 +77,17 @@ void VisionMetricsAccumulator::addFrame(const GroundPoints& points, const Pose2&
     ++band.points;
     if (tp) ++band.true_positives, band.errors.push_back(error);
   }
+  // The edge samples lie on the ray from the camera: compare with the carpet's edge on it.
+  const Eigen::Vector2d camera_field =
+      field_T_robot.transform(Eigen::Vector2d(camera.pose().x, camera.pose().y));
+  for (const FieldEdgePoint& e : points.field_edge) {
+    const Eigen::Vector2d ray = field_T_robot.transform(e.p_robot) - camera_field;
+    if (!(ray.norm() > 1e-6) || !(e.range_sigma_m > 0.0)) continue;
+    const double edge = rangeToRectangle(camera_field, ray.normalized(), field_.outerHalfLength(),
+                                         field_.outerHalfWidth());
+    edge_errors_m_.push_back(ray.norm() - edge);
+    edge_errors_sigmas_.push_back((ray.norm() - edge) / e.range_sigma_m);
+  }
   const Pose2 robot_T_field = field_T_robot.inverse();
   const double max_range = config_.band_edges_m.back();
   const double r2 = config_.recall_radius_m * config_.recall_radius_m;
@@ -131,6 +142,25 @@ VisionMetrics VisionMetricsAccumulator::result() const {
     out.p95_error_m = quantile(band.errors, 0.95);
     m.bands.push_back(out);
   }
+  FieldEdgeMetrics& edge = m.field_edge;
+  edge.samples = static_cast<long>(edge_errors_m_.size());
+  if (edge.samples > 0) {
+    std::vector<double> abs_m, abs_sigmas;
+    long within = 0, nearer = 0, farther = 0;
+    for (size_t i = 0; i < edge_errors_m_.size(); ++i) {
+      abs_m.push_back(std::abs(edge_errors_m_[i]));
+      abs_sigmas.push_back(std::abs(edge_errors_sigmas_[i]));
+      within += abs_sigmas.back() <= 3.0;
+      nearer += edge_errors_sigmas_[i] < -3.0;
+      farther += edge_errors_sigmas_[i] > 3.0;
+    }
+    const double n = static_cast<double>(edge.samples);
+    edge.median_abs_error_m = quantile(abs_m, 0.5);
+    edge.median_abs_error_sigmas = quantile(abs_sigmas, 0.5);
+    edge.within_3_sigma = within / n;
+    edge.nearer_share = nearer / n;
+    edge.farther_share = farther / n;
+  }
   return m;
 }
 
@@ -146,10 +176,18 @@ nlohmann::json toJson(const VisionMetrics& m) {
                      {"median_error_m", b.median_error_m},
                      {"p95_error_m", b.p95_error_m}});
   }
+  const FieldEdgeMetrics& e = m.field_edge;
   return {{"frames_scored", m.frames_scored},
           {"points", m.points},
           {"precision", m.precision},
-          {"bands", bands}};
+          {"bands", bands},
+          {"field_edge",
+           {{"samples", e.samples},
+            {"median_abs_error_m", e.median_abs_error_m},
+            {"median_abs_error_sigmas", e.median_abs_error_sigmas},
+            {"within_3_sigma", e.within_3_sigma},
+            {"nearer_share", e.nearer_share},
+            {"farther_share", e.farther_share}}}};
 }
 
 std::vector<VisibleRecord> visibleAt(const std::vector<VisibleRecord>& visible, std::int64_t t_us) {

@@ -28,11 +28,23 @@ struct VisionBandMetrics {
   double median_error_m = 0.0, p95_error_m = 0.0;  ///< ground error of the true positives
 };
 
+/// GroundPoints::field_edge against the carpet's edge at the true pose, along each sample's ray
+/// from the camera (error > 0: seen farther than the edge).
+struct FieldEdgeMetrics {
+  long samples = 0;
+  double median_abs_error_m = 0.0;
+  double median_abs_error_sigmas = 0.0;  ///< |error| / the sample's range_sigma_m
+  double within_3_sigma = 0.0;           ///< share of samples
+  double nearer_share = 0.0;   ///< share more than 3 sigma nearer (something on the field)
+  double farther_share = 0.0;  ///< share more than 3 sigma farther (green beyond the carpet)
+};
+
 struct VisionMetrics {
   int frames_scored = 0;
   long points = 0, true_positives = 0;
   double precision = 0.0;
   std::vector<VisionBandMetrics> bands;
+  FieldEdgeMetrics field_edge;
 };
 
 /// Accumulates DESIGN/issue-5 vision metrics over frames. Precision: share of points within
@@ -65,6 +77,7 @@ class VisionMetricsAccumulator {
   int frames_ = 0;
   long points_ = 0, true_positives_ = 0;
   std::vector<Band> bands_;
+  std::vector<double> edge_errors_m_, edge_errors_sigmas_;  ///< signed
 };
 
 nlohmann::json toJson(const VisionMetrics& metrics);

@@ -77,16 +77,45 @@ std::vector<Sample> sampleField(const FieldModel& field, const std::vector<Featu
   return out;
 }
 
+/// GroundPoints::field_edge: per bearing the carpet's edge (or the nearer side of an occluder
+/// in the way), with the range error of a boundary row field_edge_sigma_px off. Drawn last, so
+/// the line points of a seed do not depend on it.
+void addFieldEdge(const FieldModel& field, const SyntheticConfig& config,
+                  const std::vector<Occluder>& occluders, std::mt19937_64& rng,
+                  SyntheticFrame* frame) {
+  const ViewModel& view = config.view;
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  const Pose2& pose = frame->field_T_robot;
+  for (int k = 0; k < config.field_edge_samples; ++k) {
+    const double phi = view.half_angle_rad * (2.0 * (k + 0.5) / config.field_edge_samples - 1.0);
+    const Eigen::Vector2d direction(std::cos(phi), std::sin(phi));
+    double range = rangeToRectangle(pose.translation(), pose.rotation() * direction,
+                                    field.outerHalfLength(), field.outerHalfWidth());
+    for (const Occluder& o : occluders) {  // nearer intersection with the disc, if any
+      const double along = o.center.dot(direction);
+      const double off2 = o.center.squaredNorm() - along * along;
+      if (along > 0.0 && off2 < o.radius_m * o.radius_m) {
+        range = std::min(range, along - std::sqrt(o.radius_m * o.radius_m - off2));
+      }
+    }
+    if (range < view.min_range_m || range > config.field_edge_max_range_m) continue;
+    const double h = view.camera_height_m;
+    const double sigma = (range * range + h * h) / h * config.field_edge_sigma_px * view.pixel_rad;
+    const double measured = std::max(view.min_range_m, range + sigma * gauss(rng));
+    frame->ground.field_edge.push_back({measured * direction, sigma, 0});
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> viewModelNames() { return {"nao-top", "nao-bottom", "kid-wide", "adult"}; }
 
 ViewModel viewModel(const std::string& name) {
   const double deg = M_PI / 180.0;
-  if (name == "nao-top") return {name, 28.0 * deg, 0.4, 4.5};
-  if (name == "nao-bottom") return {name, 30.0 * deg, 0.15, 1.2};
-  if (name == "kid-wide") return {name, 60.0 * deg, 0.3, 5.0};
-  if (name == "adult") return {name, 35.0 * deg, 0.6, 7.0};
+  if (name == "nao-top") return {name, 28.0 * deg, 0.4, 4.5, 0.50, 0.0017};
+  if (name == "nao-bottom") return {name, 30.0 * deg, 0.15, 1.2, 0.45, 0.0017};
+  if (name == "kid-wide") return {name, 60.0 * deg, 0.3, 5.0, 0.90, 0.0016};
+  if (name == "adult") return {name, 35.0 * deg, 0.6, 7.0, 1.40, 0.0011};
   throw std::invalid_argument("unknown view model '" + name +
                               "' (known: nao-top, nao-bottom, kid-wide, adult)");
 }
@@ -170,6 +199,7 @@ SyntheticFrame generateFrame(const FieldModel& field, const Pose2& field_T_robot
         visibleRegion(view.half_angle_rad, view.min_range_m, view.max_range_m, occluders, carpet);
     if (region.size() >= 3) frame.ground.visible_regions.push_back(region);
   }
+  addFieldEdge(field, config, occluders, rng, &frame);
   return frame;
 }
 

@@ -18,10 +18,14 @@ struct ViewModel {
   double half_angle_rad = 0.49;  ///< half the horizontal opening
   double min_range_m = 0.4;      ///< nearest ground seen
   double max_range_m = 4.5;      ///< farthest line points reported
+  double camera_height_m = 0.5;  ///< for the field edge's range error: a row error of d alpha
+                                 ///< moves a ground point at range r by (r^2 + h^2) / h d alpha
+  double pixel_rad = 0.0017;     ///< angle of one pixel
 };
 
-/// nao-top (+-28 deg, 0.4-4.5 m), nao-bottom (+-30 deg, 0.15-1.2 m), kid-wide (+-60 deg,
-/// 0.3-5 m), adult (+-35 deg, 0.6-7 m).
+/// nao-top (+-28 deg, 0.4-4.5 m, 0.50 m high), nao-bottom (+-30 deg, 0.15-1.2 m, 0.45 m),
+/// kid-wide (+-60 deg, 0.3-5 m, 0.90 m), adult (+-35 deg, 0.6-7 m, 1.40 m); pixel angles as the
+/// camera presets.
 std::vector<std::string> viewModelNames();
 /// Throws std::invalid_argument naming the unknown view.
 ViewModel viewModel(const std::string& name);
@@ -34,8 +38,12 @@ struct SyntheticConfig {
   double outlier_share = 0.05;    ///< extra random points in view, share of the line points
   int occluders = 0;              ///< robots standing in view (discs hiding what is behind)
   double occluder_radius_m = 0.2;
-  bool marks = true;           ///< report points on the marks
-  bool visible_region = true;  ///< fill GroundPoints::visible_regions
+  bool marks = true;            ///< report points on the marks
+  bool visible_region = true;   ///< fill GroundPoints::visible_regions
+  int field_edge_samples = 24;  ///< bearings across the view with a GroundPoints::field_edge
+                                ///< sample (0: none); an occluder in the way gives its distance
+  double field_edge_sigma_px = 2.0;      ///< error of the detected boundary row
+  double field_edge_max_range_m = 30.0;  ///< farther edges are too close to the horizon
   std::uint64_t seed = 1;
 };
 
@@ -54,8 +62,9 @@ struct SyntheticFrame {
 };
 
 /// Points along the map's lines, arcs and marks that fall into the view (noise, outliers,
-/// occlusions as configured, deterministic for a seed) and the visible region: the wedge minus
-/// the occluders' shadows, clipped to the carpet (field plus border strip).
+/// occlusions as configured, deterministic for a seed), the visible region: the wedge minus
+/// the occluders' shadows, clipped to the carpet (field plus border strip), and the carpet's
+/// edge along bearings across the view at any range up to field_edge_max_range_m.
 SyntheticFrame generateFrame(const FieldModel& field, const Pose2& field_T_robot,
                              const SyntheticConfig& config);
 
