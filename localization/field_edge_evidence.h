@@ -25,6 +25,10 @@ struct FieldEdgeConfig {
                                 ///< pose predicts: something may stand on the field in front
   double max_range_m = 30.0;    ///< samples farther away are ignored (and non-finite ones)
   int min_samples = 4;          ///< fewer samples say too little to count
+  double max_best_cost = 0.35;  ///< when no candidate pose of a frame has a mean cost below this,
+                                ///< the samples are not the carpet's edge (a robot right in
+                                ///< front, a wrong boundary) and the frame ignores them; a clean
+                                ///< edge costs about 0.11 at the truth
 };
 
 /// The per-frame field-edge samples, ready to be compared with a pose's predicted carpet edge.
@@ -34,6 +38,8 @@ class FieldEdgeEvidence {
   FieldEdgeEvidence(const GroundPoints& frame, const FieldEdgeConfig& config);
 
   bool empty() const { return samples_.empty(); }
+  double maxBestCost() const { return config_.max_best_cost; }
+  void clear() { samples_.clear(); }
   /// Mean cost per sample in [0, 1]: 0 when every sample lies where the pose puts the carpet's
   /// edge (carpet = |x| <= half_length, |y| <= half_width, field frame), 1 when every one is
   /// clip_sigmas or more away.

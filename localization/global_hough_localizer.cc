@@ -64,7 +64,7 @@ GlobalHoughLocalizer::GlobalHoughLocalizer(const FieldModel& field, const Global
 std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& frame) const {
   const WeightedPoints points = preparePoints(frame);
   if (!hasLineSupport(points)) return {};
-  const VisibilityEvidence evidence(frame, points, config_.negative);
+  VisibilityEvidence evidence(frame, points, config_.negative);
   const HoughTransform sensor = sensorTransform(points);                             // step 1
   const std::vector<OrientationCandidate> headings = orientationCandidates(sensor);  // step 2
   if (headings.empty()) return {};
@@ -82,6 +82,16 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
   }
   for (PoseHypothesis& h : landmarkPoses(points, headings, &evidence)) {  // beyond the paper
     if (onCarpet(h.field_T_robot)) candidates.push_back(h);
+  }
+  // An edge that no candidate explains is not the carpet's (see max_best_cost): ignore it from
+  // here on, so it cannot shift every score by the same penalty.
+  if (!evidence.edgeEmpty()) {
+    std::vector<Pose2> poses;
+    poses.reserve(candidates.size());
+    for (const PoseHypothesis& h : candidates) {
+      if (h.kind != HypothesisKind::kHeadingOnly) poses.push_back(h.field_T_robot);
+    }
+    evidence.keepEdgeIfAnyFits(poses, map_.field());
   }
   // Candidates number in the hundreds and are large structs: move, and free them at once (on
   // SPL a fifth of locate() went to page faults from growing and trimming these vectors).

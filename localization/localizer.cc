@@ -105,6 +105,7 @@ const GroundPoints& cleanPoints(const GroundPoints& points, GroundPoints* storag
   storage->t_us = points.t_us;
   storage->points.clear();
   storage->visible_regions.clear();
+  storage->field_edge = points.field_edge;  // FieldEdgeEvidence skips bad samples itself
   std::copy_if(points.points.begin(), points.points.end(), std::back_inserter(storage->points),
                good_point);
   std::copy_if(points.visible_regions.begin(), points.visible_regions.end(),

@@ -197,6 +197,17 @@ double VisibilityEvidence::greenOutsideCarpet(const Pose2& field_T_robot,
   return outside * green_cell_area_;
 }
 
+bool VisibilityEvidence::keepEdgeIfAnyFits(const std::vector<Pose2>& poses,
+                                           const FieldModel& field) {
+  if (edgeEmpty()) return false;
+  for (const Pose2& pose : poses) {
+    const double cost = edge_.meanCost(pose, field.outerHalfLength(), field.outerHalfWidth());
+    if (cost < edge_.maxBestCost()) return true;
+  }
+  edge_.clear();
+  return false;
+}
+
 double VisibilityEvidence::edgePenalty(const Pose2& field_T_robot, const FieldModel& field) const {
   if (empty_ || edge_.empty()) return 0.0;
   return density_ *

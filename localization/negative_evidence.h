@@ -35,6 +35,9 @@ class VisibilityEvidence {
   bool empty() const { return empty_; }
   /// True when the frame has no usable field-edge samples.
   bool edgeEmpty() const { return empty_ || edge_.empty(); }
+  /// Drops the field-edge samples unless one of the poses explains them (mean cost below
+  /// FieldEdgeConfig::max_best_cost); returns whether they are kept.
+  bool keepEdgeIfAnyFits(const std::vector<Pose2>& poses, const FieldModel& field);
   /// Point weight per metre of seen line (converts lengths into the score's units).
   double pointDensity() const { return density_; }
   /// Metres of map line predicted at least margin_m inside the visible region without a point.

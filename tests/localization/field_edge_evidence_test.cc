@@ -9,6 +9,7 @@
 #include "field_models/standard_fields.h"
 #include "localization/gaussian_pose.h"
 #include "localization/global_hough_localizer.h"
+#include "localization/negative_evidence.h"
 #include "tools/synthetic/synthetic_ground_points.h"
 
 namespace houghloc {
@@ -66,6 +67,31 @@ TEST(FieldEdgeEvidence, IgnoresBadSamplesAndTooFewOfThem) {
   EXPECT_TRUE(
       FieldEdgeEvidence(edgeSamples({{5.2, 0.0}, {5.2, 0.1}, {5.2, -0.1}, {5.2, 0.2}}, 0.1), config)
           .empty());
+}
+
+/// A robot right in front hides the carpet's edge in every column: no pose explains the
+/// samples, and the frame ignores them instead of charging every pose the same penalty.
+TEST(FieldEdgeEvidence, AnEdgeThatNoCandidateExplainsIsIgnored) {
+  const FieldModel field = makeStandardField("spl");
+  GroundPoints frame =
+      edgeSamples({{0.8, -0.2}, {0.8, -0.1}, {0.8, 0.0}, {0.8, 0.1}, {0.8, 0.2}}, 0.01);
+  frame.visible_regions = {{{0.2, -1.0}, {2.0, -1.0}, {2.0, 1.0}, {0.2, 1.0}}};
+  WeightedPoints points;
+  for (double x = 0.5; x < 2.0; x += 0.05) {
+    points.points.push_back({x, 0.5});
+    points.weights.push_back(1.0);
+  }
+  VisibilityEvidence evidence(frame, points, NegativeEvidenceConfig{});
+  ASSERT_FALSE(evidence.edgeEmpty());
+  const std::vector<Pose2> centre_poses = {Pose2(0.0, 0.0, 0.0), Pose2(1.0, 1.0, 2.0)};
+  EXPECT_GT(evidence.edgePenalty(centre_poses[0], field), 0.0);
+  EXPECT_FALSE(evidence.keepEdgeIfAnyFits(centre_poses, field));
+  EXPECT_TRUE(evidence.edgeEmpty());
+  EXPECT_EQ(evidence.edgePenalty(centre_poses[0], field), 0.0);
+  // 0.8 m from the east edge of the carpet (x = 5.2) facing it, the same samples fit.
+  VisibilityEvidence fitting(frame, points, NegativeEvidenceConfig{});
+  EXPECT_TRUE(fitting.keepEdgeIfAnyFits({Pose2(0.0, 0.0, 0.0), Pose2(4.4, 0.0, 0.0)}, field));
+  EXPECT_FALSE(fitting.edgeEmpty());
 }
 
 /// The synthetic generator reports the carpet's edge where the geometry puts it (noise-free

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <ostream>
 #include <stdexcept>
+#include <string>
 
 #include "vision/image_conversion.h"
 #include "vision_test_views.h"
@@ -58,6 +59,32 @@ TEST_P(PipelineOnViews, PointsLieOnTheLines) {
   for (const GroundPoint& p : result.ground.points) {
     EXPECT_LE(p.p_robot.norm(), pipeline.config().projection.max_range_m + 1e-9);
     EXPECT_GT(p.weight, 0.0);
+  }
+}
+
+/// GroundPoints::field_edge lies on the carpet's edge (field plus border strip) at the view's
+/// pose, along each sample's ray from the camera, within 3 of its sigmas (plus 2 cm for the
+/// drawing's anti-aliasing); none on nao-bottom, whose image ends 1.2 m out.
+TEST_P(PipelineOnViews, FieldEdgeLiesOnTheCarpetEdge) {
+  const ViewCase& c = GetParam();
+  const TestView& view = testing::testView(c.preset, c.field, c.pose);
+  VisionPipeline pipeline(view.preset.intrinsics, configFor(view));
+  const VisionResult result = pipeline.process(view.image, view.preset.robot_T_camera, 0);
+  const Pose3& camera = view.preset.robot_T_camera;
+  const Eigen::Vector2d camera_field = view.field_T_robot.transform({camera.x, camera.y});
+  int within = 0;
+  for (const FieldEdgePoint& e : result.ground.field_edge) {
+    const Eigen::Vector2d ray = view.field_T_robot.transform(e.p_robot) - camera_field;
+    const double edge = rangeToRectangle(camera_field, ray.normalized(),
+                                         view.field.outerHalfLength(), view.field.outerHalfWidth());
+    EXPECT_GT(e.range_sigma_m, 0.0);
+    within += std::abs(ray.norm() - edge) <= 3.0 * e.range_sigma_m + 0.02;
+  }
+  if (std::string(c.preset) == "nao-bottom") {
+    EXPECT_TRUE(result.ground.field_edge.empty());
+  } else {
+    EXPECT_GE(result.ground.field_edge.size(), 12u);
+    EXPECT_GE(within, 0.9 * result.ground.field_edge.size());
   }
 }
 

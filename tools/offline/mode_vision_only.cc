@@ -1,8 +1,10 @@
 #include "tools/offline/mode_vision_only.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <opencv2/imgcodecs.hpp>
 
 #include "tools/offline/offline_output.h"
@@ -21,6 +23,8 @@ struct RunStats {
   long points = 0;
   double total_ms = 0.0, max_ms = 0.0;
   Eigen::Vector2d last_correction = Eigen::Vector2d::Zero();
+  Eigen::Vector2d last_estimate = Eigen::Vector2d::Zero();
+  Eigen::Vector2d last_sigma = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
 };
 
 void printSummary(const RunStats& s, const std::optional<VisionMetrics>& metrics,
@@ -34,6 +38,13 @@ void printSummary(const RunStats& s, const std::optional<VisionMetrics>& metrics
   }
   std::printf("  camera correction at the end: roll %.3f deg, pitch %.3f deg\n",
               s.last_correction.x() * 57.29578, s.last_correction.y() * 57.29578);
+  if (std::isfinite(s.last_sigma.maxCoeff())) {
+    // The estimate before the significance gate: what to add to camera.yaml's roll and pitch
+    // when it is well determined and the recording's calibration is known to be off.
+    std::printf("  corrector estimate: roll %.3f +- %.3f deg, pitch %.3f +- %.3f deg\n",
+                s.last_estimate.x() * 57.29578, s.last_sigma.x() * 57.29578,
+                s.last_estimate.y() * 57.29578, s.last_sigma.y() * 57.29578);
+  }
   if (!metrics) {
     std::printf("  no metrics (needs groundtruth.csv, truth/visible.csv and a field)\n");
     return;
@@ -84,6 +95,8 @@ int runVisionOnly(const OfflineContext& context) {
     stats.total_ms += result.diagnostics.time_total_ms;
     stats.max_ms = std::max(stats.max_ms, result.diagnostics.time_total_ms);
     stats.last_correction = result.diagnostics.pose_correction_rad;
+    stats.last_estimate = result.diagnostics.pose_correction_estimate_rad;
+    stats.last_sigma = result.diagnostics.pose_correction_sigma_rad;
     for (const GroundPoint& p : result.ground.points) {
       points_csv.writeRow({points_csv.format(frame.t_us), points_csv.format(p.pixel.x()),
                            points_csv.format(p.pixel.y()), points_csv.format(p.p_robot.x()),

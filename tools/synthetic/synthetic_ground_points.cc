@@ -98,7 +98,10 @@ void addFieldEdge(const FieldModel& field, const SyntheticConfig& config,
         range = std::min(range, along - std::sqrt(o.radius_m * o.radius_m - off2));
       }
     }
-    if (range < view.min_range_m || range > config.field_edge_max_range_m) continue;
+    if (range < view.min_range_m || range > view.image_far_range_m ||
+        range > config.field_edge_max_range_m) {
+      continue;  // not in the image, or too close to the horizon
+    }
     const double h = view.camera_height_m;
     const double sigma = (range * range + h * h) / h * config.field_edge_sigma_px * view.pixel_rad;
     const double measured = std::max(view.min_range_m, range + sigma * gauss(rng));
@@ -113,7 +116,7 @@ std::vector<std::string> viewModelNames() { return {"nao-top", "nao-bottom", "ki
 ViewModel viewModel(const std::string& name) {
   const double deg = M_PI / 180.0;
   if (name == "nao-top") return {name, 28.0 * deg, 0.4, 4.5, 0.50, 0.0017};
-  if (name == "nao-bottom") return {name, 30.0 * deg, 0.15, 1.2, 0.45, 0.0017};
+  if (name == "nao-bottom") return {name, 30.0 * deg, 0.15, 1.2, 0.45, 0.0017, 1.2};
   if (name == "kid-wide") return {name, 60.0 * deg, 0.3, 5.0, 0.90, 0.0016};
   if (name == "adult") return {name, 35.0 * deg, 0.6, 7.0, 1.40, 0.0011};
   throw std::invalid_argument("unknown view model '" + name +

@@ -21,11 +21,13 @@ struct ViewModel {
   double camera_height_m = 0.5;  ///< for the field edge's range error: a row error of d alpha
                                  ///< moves a ground point at range r by (r^2 + h^2) / h d alpha
   double pixel_rad = 0.0017;     ///< angle of one pixel
+  double image_far_range_m = 1e9;  ///< farthest ground in the image (the image top); the
+                                   ///< horizon's infinity when it is in view
 };
 
 /// nao-top (+-28 deg, 0.4-4.5 m, 0.50 m high), nao-bottom (+-30 deg, 0.15-1.2 m, 0.45 m),
 /// kid-wide (+-60 deg, 0.3-5 m, 0.90 m), adult (+-35 deg, 0.6-7 m, 1.40 m); pixel angles as the
-/// camera presets.
+/// camera presets; only nao-bottom's image ends before the horizon (at 1.2 m).
 std::vector<std::string> viewModelNames();
 /// Throws std::invalid_argument naming the unknown view.
 ViewModel viewModel(const std::string& name);
