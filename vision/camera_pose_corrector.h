@@ -23,9 +23,10 @@ struct CameraPoseCorrectionConfig {
                                         ///< sigma, at the camera; grows as (1 + (range / 2 m)^2),
                                         ///< like a pixel's ground footprint
   int max_segments_per_frame = 12;      ///< the longest ones are kept (bounds the solver's cost)
-  int window_frames = 120;              ///< frames whose segments are kept: the error is a constant
-                                        ///< bias, so old frames still count (and a changed one is
-                                        ///< followed within this many frames)
+  int window_frames = 600;              ///< frames whose segments are kept (20 s at 30 Hz): the
+                                        ///< error is a constant bias, so old frames still count,
+                                        ///< and a walk needs seconds to show enough geometry (a
+                                        ///< changed error is followed within this many frames)
   double max_residual_rad = 0.35;       ///< segments further than this (20 deg) from their frame's
                                         ///< two field directions are no straight field lines
   double huber_sigmas = 3.0;            ///< residuals beyond this many sigmas count linearly

@@ -18,3 +18,8 @@ set(fixtures
   "spl_nao-top_exact_seed201|--standard spl --camera nao-top --trajectory walk --seed 201")
 include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/RenderFixtureList.cmake)
 render_fixture_list(40 ${fixtures})
+# The pitch/roll corrector over 10 s of walking (the 40-frame walks above are mostly its first
+# second): the robots walk of seed 101 and the plain walk of seed 107.
+render_fixture_list(300
+  "spl_nao-top_walk_robots_300|${W} --standard spl --camera nao-top --seed 101"
+  "spl_nao-top_walk_300|--standard spl --camera nao-top --trajectory walk --seed 107")
