@@ -44,6 +44,16 @@ cv::Mat drawVisionOverlay(const cv::Mat& bgr, const VisionResult& result,
                {static_cast<int>(b->x()), static_cast<int>(b->y())}, {255, 255, 0}, 1, cv::LINE_AA);
     }
   }
+  // Field-edge samples: a cross where the carpet's end was seen, with its range in metres.
+  for (const FieldEdgePoint& e : result.ground.field_edge) {
+    const auto pixel = camera.project({e.p_robot.x(), e.p_robot.y(), 0.0});
+    if (!pixel) continue;
+    const cv::Point at(static_cast<int>(pixel->x()), static_cast<int>(pixel->y()));
+    cv::drawMarker(image, at, {0, 140, 255}, cv::MARKER_CROSS, 9, 1, cv::LINE_AA);
+    char range[16];
+    std::snprintf(range, sizeof(range), "%.1f", e.p_robot.norm());
+    cv::putText(image, range, at + cv::Point(4, -4), cv::FONT_HERSHEY_PLAIN, 0.8, {0, 140, 255});
+  }
   char text[128];
   std::snprintf(text, sizeof(text), "%zu pts  %.2f ms  corr r %.2f p %.2f deg",
                 result.ground.points.size(), result.diagnostics.time_total_ms,
