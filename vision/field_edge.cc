@@ -4,18 +4,6 @@
 #include <cmath>
 
 namespace houghloc {
-namespace {
-
-std::optional<Eigen::Vector2d> pixelToGround(const CameraModel& camera, double u, double v,
-                                             const GroundProjectionConfig& limits) {
-  const Eigen::Vector3d ray = camera.pixelRay(u, v);
-  if (!ray.allFinite()) return std::nullopt;
-  const Pose3& pose = camera.pose();
-  return rayToGround(pose.rotation().transpose() * ray, pose, limits);
-}
-
-}  // namespace
-
 std::vector<FieldEdgePoint> fieldEdgePoints(const CameraModel& camera,
                                             const FieldBoundary& boundary,
                                             const std::vector<int>& start_rows, int camera_id,

@@ -62,19 +62,24 @@ std::vector<GroundPoint> projectSpots(const std::vector<SpotRay>& rays, const Po
   return points;
 }
 
+std::optional<Eigen::Vector2d> pixelToGround(const CameraModel& camera, double u, double v,
+                                             const GroundProjectionConfig& config) {
+  const Eigen::Vector3d ray = camera.pixelRay(u, v);
+  if (!ray.allFinite()) return std::nullopt;
+  const Pose3& pose = camera.pose();
+  return rayToGround(pose.rotation().transpose() * ray, pose, config);
+}
+
 namespace {
 
 /// Ground point of a pixel, or where its ray's azimuth meets the range limit when the pixel
 /// sees farther (or above the horizon).
 std::optional<Eigen::Vector2d> groundOrLimit(const CameraModel& camera, double u, double v,
                                              const GroundProjectionConfig& config) {
+  if (const auto p = pixelToGround(camera, u, v, config)) return p;
   const Eigen::Vector3d ray = camera.pixelRay(u, v);
-  if (!ray.allFinite()) return std::nullopt;
-  const Pose3& pose = camera.pose();
-  const Eigen::Vector3d ray_camera = pose.rotation().transpose() * ray;
-  if (const auto p = rayToGround(ray_camera, pose, config)) return p;
   const Eigen::Vector2d direction(ray.x(), ray.y());
-  if (direction.norm() < 1e-9) return std::nullopt;
+  if (!direction.allFinite() || direction.norm() < 1e-9) return std::nullopt;
   return config.max_range_m * direction.normalized();
 }
 

@@ -44,6 +44,10 @@ std::optional<Eigen::Vector2d> rayToGround(const Eigen::Vector3d& ray_camera,
                                            const Pose3& robot_T_camera,
                                            const GroundProjectionConfig& config);
 
+/// Ground point (robot frame) of an image pixel under the camera's pose; none as rayToGround.
+std::optional<Eigen::Vector2d> pixelToGround(const CameraModel& camera, double u, double v,
+                                             const GroundProjectionConfig& config);
+
 struct ProjectionStats {
   int dropped_range = 0;  ///< beyond max_range_m, grazing or above the horizon
   int thinned = 0;        ///< removed by the ground-cell thinning
