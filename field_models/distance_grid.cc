@@ -34,6 +34,8 @@ void DistanceGrid::buildBlockMinima() {
   if (cells_x <= 0 || cells_y <= 0) return;
   half_diagonal_ = 0.5 * std::sqrt(2.0) * config_.resolution_m * (1.0 + 1e-9) +
                    1e-6 * std::max(1.0, config_.max_distance_m);
+  cell_diagonal_ = 2.0 * half_diagonal_;
+  slope_ = 1.0 + 2e-6 * std::max(1.0, config_.max_distance_m) / config_.resolution_m + 1e-9;
   const int size = 1 << kBlockShift;
   block_cols_ = (cells_x + size - 1) / size;
   const int block_rows = (cells_y + size - 1) / size;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -79,6 +80,26 @@ class DistanceGrid {
            half_diagonal_;
   }
 
+  /// True when p_field lies where lookups interpolate the grid (not beyond its edge).
+  bool onGrid(const Eigen::Vector2d& p_field) const {
+    const double gx = (p_field.x() - origin_.x()) * inv_resolution_;
+    const double gy = (p_field.y() - origin_.y()) * inv_resolution_;
+    return gx >= 0.0 && gy >= 0.0 && gx < cols_ - 1.0 && gy < rows_ - 1.0;
+  }
+  /// A lower bound of distance(q') for every q' = q + (dx, dy) with |dx| + |dy| <= moved_l1_m
+  /// and length <= moved_m, where distanceBelow(q, limit) returned `seen_m`; where it is >=
+  /// limit, so is distanceBelow(q', limit). Why it holds: on the grid `seen_m` is at most the
+  /// interpolated distance D(q); each partial derivative of D is at most 1 (adjacent nodes differ
+  /// by at most a cell), and D is within a cell diagonal of the exact (1-Lipschitz) distance.
+  /// Beyond the grid's edge `seen_m` is D at the nearest grid point plus the distance to it; that
+  /// distance shrinks by at most moved_m. Lets a scan skip positions where a point cannot come
+  /// near a line.
+  double movedLowerBound(const Eigen::Vector2d& q, double seen_m, double moved_l1_m,
+                         double moved_m) const {
+    if (!onGrid(q)) return seen_m - slope_ * moved_l1_m - moved_m;
+    return std::max(seen_m - slope_ * moved_l1_m, seen_m - moved_m - 2.0 * cell_diagonal_);
+  }
+
   double resolution() const { return config_.resolution_m; }
   int cols() const { return cols_; }
   int rows() const { return rows_; }
@@ -117,6 +138,10 @@ class DistanceGrid {
   /// Half a cell diagonal plus the float rounding of a node: every point of a cell is this close
   /// to one of its nodes, and the distance is 1-Lipschitz (lowerBound).
   double half_diagonal_ = 0.0;
+  /// A cell diagonal plus the float rounding of a node: |D - f| <= this (movedLowerBound).
+  double cell_diagonal_ = 0.0;
+  /// 1, enlarged by the float rounding of two nodes over a cell: bounds |dD/dx|, |dD/dy|.
+  double slope_ = 0.0;
 };
 
 }  // namespace houghloc

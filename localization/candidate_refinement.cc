@@ -85,13 +85,10 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
   // Scan along the lines: where the points fit the segments and no line is missing.
   const WeightedPoints few = subsamplePoints(points, config_.prescore_points);
   const double step = config_.line_scan_step_m;
-  std::vector<double> s_values, scores;
-  for (double s = s_min; s <= s_max + 1e-9; s += step) {
-    const Eigen::Vector2d t = t0 + s * u;
-    s_values.push_back(s);
-    scores.push_back(
-        scorePose(few, Pose2(t.x(), t.y(), theta), map_.grid(), config_.scoring).score);
-  }
+  std::vector<double> s_values;
+  for (double s = s_min; s <= s_max + 1e-9; s += step) s_values.push_back(s);
+  std::vector<double> scores =
+      scoreAlongLine(few, theta, t0, u, s_values, map_.grid(), config_.scoring);
   if (scores.empty()) return {};
   // Subtract the negative evidence lazily, best positive score first: the penalty is >= 0, so
   // once a position's positive score is below the floor of the best total so far, neither it

@@ -29,25 +29,11 @@ FeatureLookup::FeatureLookup(const FieldModel& field, double resolution_m, doubl
   }
 }
 
-FeatureLookup::Residual FeatureLookup::residual(const Eigen::Vector2d& p) const {
+FeatureLookup::Residual FeatureLookup::residualBeyond(const Eigen::Vector2d& p, int code) const {
   Residual out;
-  if (cells_.empty() || !p.allFinite()) return out;
-  const int c = std::clamp(static_cast<int>((p.x() - origin_.x()) * inv_resolution_), 0, cols_ - 1);
-  const int r = std::clamp(static_cast<int>((p.y() - origin_.y()) * inv_resolution_), 0, rows_ - 1);
-  const int code = cells_[static_cast<std::size_t>(r) * cols_ + c];
-  if (code < 0) return out;
   const FeatureRef f{static_cast<FeatureKind>(code & 3), code >> 2};
   Eigen::Vector2d q;
-  if (f.kind == FeatureKind::kSegment) {
-    // Signed point-to-line distance inside the segment: smooth across the line for Gauss-Newton.
-    const Line& line = lines_[f.index];
-    const double t = (p - line.a).dot(line.u);
-    if (t > 0.0 && t < line.length) {
-      out.direction = Eigen::Vector2d(-line.u.y(), line.u.x());
-      out.distance_m = out.direction.dot(p - line.a);
-      out.valid = true;
-      return out;
-    }
+  if (f.kind == FeatureKind::kSegment) {  // beyond the segment's interior (see residual())
     q = field_copy_.segments[f.index].closestPoint(p);
   } else if (f.kind == FeatureKind::kArc) {
     const Arc2& arc = field_copy_.arcs[f.index];

@@ -81,6 +81,65 @@ std::vector<PoseScore> scoreTranslations(const WeightedPoints& points, double th
   return out;
 }
 
+std::vector<double> scoreAlongLine(const WeightedPoints& points, double theta_rad,
+                                   const Eigen::Vector2d& t0, const Eigen::Vector2d& u,
+                                   const std::vector<double>& s_values, const DistanceGrid& grid,
+                                   const ScoringConfig& config) {
+  const std::size_t n = s_values.size();
+  std::vector<double> out(n, 0.0);
+  std::vector<double> tx(n), ty(n);
+  bool finite = std::isfinite(Pose2(0.0, 0.0, theta_rad).theta);
+  for (std::size_t j = 0; j < n; ++j) {
+    const Eigen::Vector2d t = t0 + s_values[j] * u;  // as the caller builds its poses
+    tx[j] = t.x();
+    ty[j] = t.y();
+    finite = finite && std::isfinite(tx[j]) && std::isfinite(ty[j]);
+  }
+  if (points.empty()) return out;
+  if (!finite) {  // the plain way; scorePose scores a non-finite pose 0
+    for (std::size_t j = 0; j < n; ++j) {
+      out[j] = scorePose(points, Pose2(tx[j], ty[j], theta_rad), grid, config).score;
+    }
+    return out;
+  }
+  const double theta = Pose2(0.0, 0.0, theta_rad).theta;
+  const double c = std::cos(theta), s = std::sin(theta);
+  const double inv_w2 = 1.0 / (config.kernel_width_m * config.kernel_width_m);
+  const double limit = std::max(config.kernel_width_m, config.inlier_distance_m) + 1e-9;
+  // Moves along the scan are measured in s; |u| and the rounding of t0 + s u add at most this.
+  const double u_norm = u.norm() * (1.0 + 1e-12);
+  const double u_l1 = (std::abs(u.x()) + std::abs(u.y())) * (1.0 + 1e-12);
+  constexpr double kRoundingM = 1e-9;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector2d& p = points.points[i];
+    const double rx = c * p.x() - s * p.y(), ry = s * p.x() + c * p.y();
+    const double w = points.weights[i];
+    bool near = false;
+    for (std::size_t j = 0; j < n;) {
+      const Eigen::Vector2d q(rx + tx[j], ry + ty[j]);  // scorePose's c x - s y + t_x
+      // After a position near a line the next is usually near one too (the scan runs along the
+      // seen lines): interpolate at once. Below the limit both lookups return the same value,
+      // above it both make the kernel exactly zero.
+      const double d = near ? grid.distance(q) : grid.distanceBelow(q, limit);
+      near = d < limit;
+      out[j] += w * std::max(0.0, 1.0 - d * d * inv_w2);
+      std::size_t next = j + 1;
+      if (d > limit) {
+        while (next < n) {
+          const double ds = s_values[next] - s_values[j];
+          if (grid.movedLowerBound(q, d, ds * u_l1 + kRoundingM, ds * u_norm + kRoundingM) <
+              limit) {
+            break;
+          }
+          ++next;  // the point adds exactly zero there
+        }
+      }
+      j = next;
+    }
+  }
+  return out;
+}
+
 std::vector<PoseHypothesis> pruneCandidates(std::vector<PoseHypothesis> candidates,
                                             const PruningConfig& config) {
   std::sort(candidates.begin(), candidates.end(),

@@ -32,6 +32,16 @@ std::vector<PoseScore> scoreTranslations(const WeightedPoints& points, double th
                                          const std::vector<Eigen::Vector2d>& translations,
                                          const DistanceGrid& grid, const ScoringConfig& config);
 
+/// scorePose(points, Pose2(t.x(), t.y(), theta_rad), grid, config).score at t = t0 + s u for
+/// every s of `s_values` (increasing; u a unit vector): the scan along parallel lines. The same
+/// numbers, bit for bit (each sum adds the same terms in the same order; a point adds exactly
+/// zero where it is beyond the kernel), but point by point: from where a point is far from every
+/// line it skips the positions at which the grid's bound says it cannot come near one.
+std::vector<double> scoreAlongLine(const WeightedPoints& points, double theta_rad,
+                                   const Eigen::Vector2d& t0, const Eigen::Vector2d& u,
+                                   const std::vector<double>& s_values, const DistanceGrid& grid,
+                                   const ScoringConfig& config);
+
 struct PruningConfig {
   double min_inlier_share = 0.25;     ///< drop candidates with fewer points on map segments
   double min_relative_score = 0.5;    ///< ... or scoring below this share of the best candidate

@@ -121,6 +121,82 @@ TEST_P(FastPathsTest, ScoringATranslationScanEqualsScoringEachPose) {
   }
 }
 
+TEST_P(FastPathsTest, MovedLowerBoundHoldsOnAndOffTheGrid) {
+  const FieldModel field = makeStandardField(GetParam());
+  const DistanceGrid grid(field);
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  // From points on the grid and beyond it (the grid ends 0.5 m past the carpet).
+  const double hx = field.outerHalfLength() + 2.0, hy = field.outerHalfWidth() + 2.0;
+  int useful = 0, off_grid = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const Eigen::Vector2d q(hx * u(rng), hy * u(rng));
+    const double limit = i % 2 ? 0.15 : 0.4;
+    const double seen = grid.distanceBelow(q, limit);
+    // Short moves (a scan's steps) and long ones, in any direction.
+    const double moved = (i % 3 ? 0.3 : 3.0) * std::abs(u(rng));
+    const double angle = M_PI * u(rng);
+    const Eigen::Vector2d step = moved * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    const Eigen::Vector2d q2 = q + step;
+    const double bound =
+        grid.movedLowerBound(q, seen, step.cwiseAbs().sum() + 1e-9, step.norm() + 1e-9);
+    ASSERT_LE(bound, grid.distance(q2)) << q.transpose() << " -> " << q2.transpose();
+    if (bound >= limit) {
+      ASSERT_GE(grid.distanceBelow(q2, limit), limit);
+      ++useful;
+      off_grid += !grid.onGrid(q);
+    }
+  }
+  EXPECT_GT(useful, 10000);  // the bound is tight enough to skip many positions
+  EXPECT_GT(off_grid, 1000);
+}
+
+TEST_P(FastPathsTest, ScoringAlongALineEqualsScoringEachPose) {
+  const FieldModel field = makeStandardField(GetParam());
+  const DistanceGrid grid(field);
+  std::mt19937 rng(29);
+  std::normal_distribution<double> noise(0.0, 0.02);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  // Map points seen from a pose (so that the scan passes along lines) plus clutter.
+  const Pose2 truth(1.0, -0.5, 0.4);  // the centre circle and halfway line in view
+  const WeightedPoints samples = sampleMapLines(field, 0.05, true);
+  WeightedPoints points;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const Eigen::Vector2d p = truth.inverse().transform(samples.points[i]);
+    if (p.norm() > 5.0 || p.x() < 0.0) continue;
+    points.points.push_back(p + Eigen::Vector2d(noise(rng), noise(rng)));
+    points.weights.push_back(0.5 + std::abs(u(rng)));
+  }
+  for (int k = 0; k < 30; ++k) {
+    points.points.push_back(Eigen::Vector2d(6.0 * std::abs(u(rng)), 4.0 * u(rng)));
+    points.weights.push_back(0.5);
+  }
+  ASSERT_GT(points.size(), 60u);
+  const ScoringConfig config;
+  int on_lines = 0;
+  // Along the field's axes and diagonally; headings that Pose2 normalises; scans that leave the
+  // grid (the carpet plus 0.5 m) at both ends.
+  for (double along : {0.0, M_PI / 2.0, 0.7}) {
+    for (double theta : {truth.theta, truth.theta + 2.0 * M_PI, -2.9}) {
+      const Eigen::Vector2d dir(std::cos(along), std::sin(along));
+      std::vector<double> s_values;
+      for (double s = -field.outerHalfLength() - 2.0; s <= field.outerHalfLength() + 2.0; s += 0.1)
+        s_values.push_back(s);
+      const Eigen::Vector2d t0 = truth.translation() + 0.01 * Eigen::Vector2d(u(rng), u(rng));
+      const std::vector<double> scan =
+          scoreAlongLine(points, theta, t0, dir, s_values, grid, config);
+      ASSERT_EQ(scan.size(), s_values.size());
+      for (std::size_t k = 0; k < s_values.size(); ++k) {
+        const Eigen::Vector2d t = t0 + s_values[k] * dir;
+        const double one = scorePose(points, Pose2(t.x(), t.y(), theta), grid, config).score;
+        ASSERT_EQ(scan[k], one) << along << " " << theta << " " << k;  // bit for bit
+        on_lines += one > 0.3 * points.totalWeight();
+      }
+    }
+  }
+  EXPECT_GT(on_lines, 10);  // some positions put many points on lines
+}
+
 INSTANTIATE_TEST_SUITE_P(Fields, FastPathsTest, ::testing::Values("spl", "msl"));
 
 TEST(FastHoughTest, AddPointsEqualsAddPointOneByOne) {
