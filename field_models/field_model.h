@@ -1,6 +1,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -43,7 +46,19 @@ std::string describeFeature(const FeatureRef& feature);
 /// Distance from `origin` along the unit `direction` to the border of the rectangle
 /// |x| <= half_x, |y| <= half_y (e.g. the carpet, outerHalfLength() x outerHalfWidth(), field
 /// frame); 0 when origin lies outside it.
-double rangeToRectangle(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction,
-                        double half_x, double half_y);
+/// Inline: the global localizer calls it for every field-edge sample of every candidate pose.
+inline double rangeToRectangle(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction,
+                               double half_x, double half_y) {
+  if (!(std::abs(origin.x()) <= half_x && std::abs(origin.y()) <= half_y)) return 0.0;
+  // From inside, the ray leaves through the nearer of the two walls it runs towards.
+  const double to_x = direction.x() != 0.0
+                          ? (std::copysign(half_x, direction.x()) - origin.x()) / direction.x()
+                          : std::numeric_limits<double>::infinity();
+  const double to_y = direction.y() != 0.0
+                          ? (std::copysign(half_y, direction.y()) - origin.y()) / direction.y()
+                          : std::numeric_limits<double>::infinity();
+  const double range = std::min(to_x, to_y);
+  return std::isfinite(range) ? range : 0.0;
+}
 
 }  // namespace houghloc

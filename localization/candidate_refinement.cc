@@ -104,7 +104,14 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
   for (std::size_t i : order) {
     if (best > -1e300 && scores[i] < floorOf(best)) break;
     const Eigen::Vector2d t = t0 + s_values[i] * u;
-    scores[i] -= evidence.penalty(Pose2(t.x(), t.y(), theta), map_);
+    const Pose2 pose(t.x(), t.y(), theta);
+    // A position that stays below the floor even with the cheap part of its penalty cannot raise
+    // `best` nor reach the final floor (the floor only rises): skip the costly unseen-line term.
+    if (best > -1e300 &&
+        scores[i] - evidence.cheapPenaltyBound(pose, map_.field()) < floorOf(best)) {
+      continue;
+    }
+    scores[i] -= evidence.penalty(pose, map_);
     done[i] = 1;
     best = std::max(best, scores[i]);
   }

@@ -24,13 +24,18 @@ FieldEdgeEvidence::FieldEdgeEvidence(const GroundPoints& frame, const FieldEdgeC
 double FieldEdgeEvidence::meanCost(const Pose2& field_T_robot, double half_length,
                                    double half_width) const {
   if (samples_.empty()) return 0.0;
-  const Eigen::Vector2d origin = field_T_robot.translation();
+  const double ox = field_T_robot.x, oy = field_T_robot.y;
+  // Off the carpet every predicted range is 0 (rangeToRectangle): all samples are seen farther.
+  const bool off = !(std::abs(ox) <= half_length && std::abs(oy) <= half_width);
   const double c = std::cos(field_T_robot.theta), s = std::sin(field_T_robot.theta);
   double sum = 0.0;
   for (const Sample& sample : samples_) {
-    const Eigen::Vector2d d(c * sample.direction.x() - s * sample.direction.y(),
-                            s * sample.direction.x() + c * sample.direction.y());
-    const double predicted = rangeToRectangle(origin, d, half_length, half_width);
+    // rangeToRectangle inlined: the ray leaves through the nearer of the walls it runs towards.
+    const double dx = c * sample.direction.x() - s * sample.direction.y();
+    const double dy = s * sample.direction.x() + c * sample.direction.y();
+    const double to_x = (std::copysign(half_length, dx) - ox) / dx;  // +inf when dx == 0
+    const double to_y = (std::copysign(half_width, dy) - oy) / dy;
+    const double predicted = off ? 0.0 : std::min(to_x, to_y);
     const double e = std::min(1.0, std::abs(sample.range_m - predicted) * sample.inv_sigma);
     sum += (sample.range_m < predicted ? config_.nearer_weight : 1.0) * e * e;
   }

@@ -214,6 +214,13 @@ double VisibilityEvidence::edgePenalty(const Pose2& field_T_robot, const FieldMo
          edge_.penaltyMetres(field_T_robot, field.outerHalfLength(), field.outerHalfWidth());
 }
 
+double VisibilityEvidence::cheapPenaltyBound(const Pose2& field_T_robot,
+                                             const FieldModel& field) const {
+  if (empty_) return 0.0;
+  return density_ * config_.outside_weight * greenOutsideCarpet(field_T_robot, field) +
+         edgePenalty(field_T_robot, field);
+}
+
 double VisibilityEvidence::penalty(const Pose2& field_T_robot, const MapSignature& map) const {
   if (empty_) return 0.0;
   return density_ * (config_.line_weight * unseenLineLength(field_T_robot, map) +

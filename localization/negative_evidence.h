@@ -49,6 +49,9 @@ class VisibilityEvidence {
   /// Penalty in point weight: density * (line_weight * unseen + outside_weight * green area)
   /// plus edgePenalty().
   double penalty(const Pose2& field_T_robot, const MapSignature& map) const;
+  /// A lower bound of penalty() without its costly term (the unseen lines): density *
+  /// outside_weight * green area plus edgePenalty().
+  double cheapPenaltyBound(const Pose2& field_T_robot, const FieldModel& field) const;
 
  private:
   void rasterise(const std::vector<GroundPolygon>& polygons);
