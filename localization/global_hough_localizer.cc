@@ -275,7 +275,7 @@ std::vector<OrientationCandidate> GlobalHoughLocalizer::scanHeadings(
     maxima.resize(config_.landmarks.heading_scan_maxima);
   }
   // A lone arc leaves the rotation to the field edge, whose cost varies smoothly: place each
-  // maximum between its neighbours at a tenth of the step (far from the landmark a 1 deg step
+  // maximum between its neighbours at a tenth of the step (far from the landmark a 2 deg step
   // moves the robot by more than the 0.1 m a pose may be off).
   if (evidence && !evidence->edgeEmpty()) {
     const double step = 2.0 * M_PI / n;
