@@ -121,6 +121,13 @@ TEST_F(LocalizerRobustness, NanAndInfPoints) {
     f->points.points[2].weight = kNan;
     f->points.points[3].weight = -kInf;
     f->points.visible_regions = {{{0.0, 0.0}, {kNan, 1.0}, {1.0, 1.0}}};
+    // Field-edge samples that no use may trust, next to whatever the scenario has.
+    for (const FieldEdgePoint& bad :
+         {FieldEdgePoint{{kNan, 1.0}, 0.1, 0}, FieldEdgePoint{{1.0, kInf}, 0.1, 0},
+          FieldEdgePoint{{3.0, 0.0}, kNan, 0}, FieldEdgePoint{{3.0, 1.0}, -1.0, 0},
+          FieldEdgePoint{{0.0, 0.0}, 0.1, 0}, FieldEdgePoint{{1e12, 0.0}, kInf, 0}}) {
+      f->points.field_edge.push_back(bad);
+    }
     if (k % 50 == 0) {
       for (GroundPoint& p : f->points.points) p.p_robot = Eigen::Vector2d(kNan, kNan);
     }
