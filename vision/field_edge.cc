@@ -4,6 +4,7 @@
 #include <cmath>
 
 namespace houghloc {
+
 std::vector<FieldEdgePoint> fieldEdgePoints(const CameraModel& camera,
                                             const FieldBoundary& boundary,
                                             const std::vector<int>& start_rows, int camera_id,
