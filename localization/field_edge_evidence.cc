@@ -30,7 +30,9 @@ double FieldEdgeEvidence::meanCost(const Pose2& field_T_robot, double half_lengt
   const double c = std::cos(field_T_robot.theta), s = std::sin(field_T_robot.theta);
   double sum = 0.0;
   for (const Sample& sample : samples_) {
-    // rangeToRectangle inlined: the ray leaves through the nearer of the walls it runs towards.
+    // rangeToRectangle written out, with its inside test hoisted out of the loop: calling it per
+    // sample made MSL's locate() 3-6 % slower (same results). The ray leaves through the nearer
+    // of the walls it runs towards.
     const double dx = c * sample.direction.x() - s * sample.direction.y();
     const double dy = s * sample.direction.x() + c * sample.direction.y();
     const double to_x = (std::copysign(half_length, dx) - ox) / dx;  // +inf when dx == 0
