@@ -77,9 +77,9 @@ std::vector<Sample> sampleField(const FieldModel& field, const std::vector<Featu
   return out;
 }
 
-/// GroundPoints::field_edge: per bearing the carpet's edge (or the nearer side of an occluder
-/// in the way), with the range error of a boundary row field_edge_sigma_px off. Drawn last, so
-/// the line points of a seed do not depend on it.
+/// GroundPoints::field_edge: per bearing the carpet's edge (or the near side of an occluder in
+/// the way, as the visible region's shadows), with the range error of a boundary row
+/// field_edge_sigma_px off. Drawn last, so the line points of a seed do not depend on it.
 void addFieldEdge(const FieldModel& field, const SyntheticConfig& config,
                   const std::vector<Occluder>& occluders, std::mt19937_64& rng,
                   SyntheticFrame* frame) {
@@ -91,13 +91,7 @@ void addFieldEdge(const FieldModel& field, const SyntheticConfig& config,
     const Eigen::Vector2d direction(std::cos(phi), std::sin(phi));
     double range = rangeToRectangle(pose.translation(), pose.rotation() * direction,
                                     field.outerHalfLength(), field.outerHalfWidth());
-    for (const Occluder& o : occluders) {  // nearer intersection with the disc, if any
-      const double along = o.center.dot(direction);
-      const double off2 = o.center.squaredNorm() - along * along;
-      if (along > 0.0 && off2 < o.radius_m * o.radius_m) {
-        range = std::min(range, along - std::sqrt(o.radius_m * o.radius_m - off2));
-      }
-    }
+    range = visibleRange(phi, range, occluders);  // an occluder's near side, if one is in the way
     if (range < view.min_range_m || range > view.image_far_range_m ||
         range > config.field_edge_max_range_m) {
       continue;  // not in the image, or too close to the horizon

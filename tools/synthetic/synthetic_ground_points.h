@@ -15,12 +15,12 @@ namespace houghloc {
 /// A simple camera footprint on the ground: a wedge in front of the robot (robot frame).
 struct ViewModel {
   std::string name;
-  double half_angle_rad = 0.49;  ///< half the horizontal opening
-  double min_range_m = 0.4;      ///< nearest ground seen
-  double max_range_m = 4.5;      ///< farthest line points reported
-  double camera_height_m = 0.5;  ///< for the field edge's range error: a row error of d alpha
-                                 ///< moves a ground point at range r by (r^2 + h^2) / h d alpha
-  double pixel_rad = 0.0017;     ///< angle of one pixel
+  double half_angle_rad = 0.49;    ///< half the horizontal opening
+  double min_range_m = 0.4;        ///< nearest ground seen
+  double max_range_m = 4.5;        ///< farthest line points reported
+  double camera_height_m = 0.5;    ///< for the field edge's range error: a row error of d alpha
+                                   ///< moves a ground point at range r by (r^2 + h^2) / h d alpha
+  double pixel_rad = 0.0017;       ///< angle of one pixel
   double image_far_range_m = 1e9;  ///< farthest ground in the image (the image top); the
                                    ///< horizon's infinity when it is in view
 };

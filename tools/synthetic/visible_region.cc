@@ -4,9 +4,7 @@
 #include <cmath>
 
 namespace houghloc {
-namespace {
 
-/// Range at which the view along angle phi ends (an occluder's near side or max_range).
 double visibleRange(double phi, double max_range, const std::vector<Occluder>& occluders) {
   double r = max_range;
   for (const Occluder& o : occluders) {
@@ -20,6 +18,8 @@ double visibleRange(double phi, double max_range, const std::vector<Occluder>& o
   }
   return r;
 }
+
+namespace {
 
 GroundPolygon clipByEdge(const GroundPolygon& poly, const Eigen::Vector2d& a,
                          const Eigen::Vector2d& b) {

@@ -13,6 +13,10 @@ struct Occluder {
   double radius_m = 0.2;
 };
 
+/// Range at which the view along angle phi (robot frame) ends: an occluder's near side (0 when
+/// the robot stands in one) or max_range.
+double visibleRange(double phi, double max_range, const std::vector<Occluder>& occluders);
+
 /// Whether the ground point p_robot is visible: inside the wedge and not behind an occluder.
 bool wedgeVisible(const Eigen::Vector2d& p_robot, double half_angle_rad, double min_range_m,
                   double max_range_m, const std::vector<Occluder>& occluders);
