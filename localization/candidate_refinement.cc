@@ -107,11 +107,9 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
     const Pose2 pose(t.x(), t.y(), theta);
     // A position that stays below the floor even with the cheap part of its penalty cannot raise
     // `best` nor reach the final floor (the floor only rises): skip the costly unseen-line term.
-    if (best > -1e300 &&
-        scores[i] - evidence.cheapPenaltyBound(pose, map_.field()) < floorOf(best)) {
-      continue;
-    }
-    scores[i] -= evidence.penalty(pose, map_);
+    const VisibilityEvidence::CheapTerms cheap = evidence.cheapTerms(pose, map_.field());
+    if (best > -1e300 && scores[i] - cheap.bound < floorOf(best)) continue;
+    scores[i] -= evidence.penalty(pose, map_, cheap);
     done[i] = 1;
     best = std::max(best, scores[i]);
   }

@@ -214,18 +214,26 @@ double VisibilityEvidence::edgePenalty(const Pose2& field_T_robot, const FieldMo
          edge_.penaltyMetres(field_T_robot, field.outerHalfLength(), field.outerHalfWidth());
 }
 
-double VisibilityEvidence::cheapPenaltyBound(const Pose2& field_T_robot,
-                                             const FieldModel& field) const {
-  if (empty_) return 0.0;
-  return density_ * config_.outside_weight * greenOutsideCarpet(field_T_robot, field) +
-         edgePenalty(field_T_robot, field);
+VisibilityEvidence::CheapTerms VisibilityEvidence::cheapTerms(const Pose2& field_T_robot,
+                                                              const FieldModel& field) const {
+  CheapTerms terms;
+  if (empty_) return terms;
+  terms.green_m2 = greenOutsideCarpet(field_T_robot, field);
+  terms.edge = edgePenalty(field_T_robot, field);
+  terms.bound = density_ * config_.outside_weight * terms.green_m2 + terms.edge;
+  return terms;
 }
 
 double VisibilityEvidence::penalty(const Pose2& field_T_robot, const MapSignature& map) const {
+  return penalty(field_T_robot, map, cheapTerms(field_T_robot, map.field()));
+}
+
+double VisibilityEvidence::penalty(const Pose2& field_T_robot, const MapSignature& map,
+                                   const CheapTerms& cheap) const {
   if (empty_) return 0.0;
   return density_ * (config_.line_weight * unseenLineLength(field_T_robot, map) +
-                     config_.outside_weight * greenOutsideCarpet(field_T_robot, map.field())) +
-         edgePenalty(field_T_robot, map.field());
+                     config_.outside_weight * cheap.green_m2) +
+         cheap.edge;
 }
 
 }  // namespace houghloc

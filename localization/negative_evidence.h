@@ -46,12 +46,18 @@ class VisibilityEvidence {
   double greenOutsideCarpet(const Pose2& field_T_robot, const FieldModel& field) const;
   /// Penalty in point weight of the field-edge samples alone (cheap: a few ray casts).
   double edgePenalty(const Pose2& field_T_robot, const FieldModel& field) const;
+  /// The cheap terms of penalty(), for callers that decide on them before paying for the
+  /// unseen lines: green beyond the carpet (m^2) and edgePenalty(); `bound` = density *
+  /// outside_weight * green + edge is a lower bound of penalty().
+  struct CheapTerms {
+    double green_m2 = 0.0, edge = 0.0, bound = 0.0;
+  };
+  CheapTerms cheapTerms(const Pose2& field_T_robot, const FieldModel& field) const;
   /// Penalty in point weight: density * (line_weight * unseen + outside_weight * green area)
-  /// plus edgePenalty().
+  /// plus edgePenalty(); the second form takes the cheap terms already computed for the pose.
   double penalty(const Pose2& field_T_robot, const MapSignature& map) const;
-  /// A lower bound of penalty() without its costly term (the unseen lines): density *
-  /// outside_weight * green area plus edgePenalty().
-  double cheapPenaltyBound(const Pose2& field_T_robot, const FieldModel& field) const;
+  double penalty(const Pose2& field_T_robot, const MapSignature& map,
+                 const CheapTerms& cheap) const;
 
  private:
   void rasterise(const std::vector<GroundPolygon>& polygons);
