@@ -9,6 +9,16 @@ namespace houghloc {
 
 namespace {
 
+/// Beyond both the kernel width and the inlier distance a point adds exactly nothing, so the grid
+/// is only read near lines (distanceBelow; the 1e-9 keeps d == width out of the question).
+/// scoreAlongLine must use the same limit to give scorePose's numbers.
+double contributionLimit(const ScoringConfig& config) {
+  return std::max(config.kernel_width_m, config.inlier_distance_m) + 1e-9;
+}
+
+/// The robust kernel k(d) = max(0, 1 - (d / width)^2), with inv_w2 = 1 / width^2.
+double kernel(double d, double inv_w2) { return std::max(0.0, 1.0 - d * d * inv_w2); }
+
 /// Sum over the points at field positions position(i), in batches: first the positions and a
 /// prefetch of the grid nodes near lines, then the lookups, so that the cache misses of a batch
 /// overlap instead of following one another.
@@ -17,9 +27,7 @@ PoseScore scoreAt(const std::vector<double>& weights, Position&& position, const
                   const ScoringConfig& config) {
   PoseScore out;
   const double inv_w2 = 1.0 / (config.kernel_width_m * config.kernel_width_m);
-  // Beyond both the kernel width and the inlier distance a point adds exactly nothing, so the
-  // grid is only read near lines (distanceBelow; the 1e-9 keeps d == width out of the question).
-  const double limit = std::max(config.kernel_width_m, config.inlier_distance_m) + 1e-9;
+  const double limit = contributionLimit(config);
   double total = 0.0, inliers = 0.0;
   constexpr std::size_t kBatch = 32;
   Eigen::Vector2d q[kBatch];
@@ -34,7 +42,7 @@ PoseScore scoreAt(const std::vector<double>& weights, Position&& position, const
       const double d = grid.distanceBelow(q[k], limit);
       const double w = weights[start + k];
       total += w;
-      out.score += w * std::max(0.0, 1.0 - d * d * inv_w2);
+      out.score += w * kernel(d, inv_w2);
       if (d <= config.inlier_distance_m) inliers += w;
     }
   }
@@ -105,7 +113,7 @@ std::vector<double> scoreAlongLine(const WeightedPoints& points, double theta_ra
   const double theta = Pose2(0.0, 0.0, theta_rad).theta;
   const double c = std::cos(theta), s = std::sin(theta);
   const double inv_w2 = 1.0 / (config.kernel_width_m * config.kernel_width_m);
-  const double limit = std::max(config.kernel_width_m, config.inlier_distance_m) + 1e-9;
+  const double limit = contributionLimit(config);
   // Moves along the scan are measured in s; |u| and the rounding of t0 + s u add at most this.
   const double u_norm = u.norm() * (1.0 + 1e-12);
   const double u_l1 = (std::abs(u.x()) + std::abs(u.y())) * (1.0 + 1e-12);
@@ -122,7 +130,7 @@ std::vector<double> scoreAlongLine(const WeightedPoints& points, double theta_ra
       // above it both make the kernel exactly zero.
       const double d = near ? grid.distance(q) : grid.distanceBelow(q, limit);
       near = d < limit;
-      out[j] += w * std::max(0.0, 1.0 - d * d * inv_w2);
+      out[j] += w * kernel(d, inv_w2);
       std::size_t next = j + 1;
       if (d > limit) {
         while (next < n) {
