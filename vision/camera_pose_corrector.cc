@@ -39,6 +39,7 @@ Pose3 CameraPoseCorrector::corrected(const Pose3& recorded) const {
 }
 
 void CameraPoseCorrector::reset() {
+  last_map_inliers_ = 0;
   estimate_.setZero();
   applied_.setZero();
   sigma_.setConstant(std::numeric_limits<double>::infinity());
@@ -97,9 +98,14 @@ void CameraPoseCorrector::frameResiduals(const Frame& frame, const Eigen::Vector
       if (gates) gates->push_back(config_.max_circle_residual_m / arc.sigma_m);
     }
   }
+  for (const MapTiltObservation& map : frame.map) map.residuals(pose, config_.map, out, gates);
 }
 
 void CameraPoseCorrector::linearize(Frame* frame, const Eigen::Vector2d& c) const {
+  // Map matches follow the tilt: a point at 4 m moves ~1 cm per relinearize_rad.
+  for (MapTiltObservation& map : frame->map) {
+    map.associate(*field_, withCorrection(frame->recorded, c), config_.map);
+  }
   std::vector<double> r0, gates;
   frameResiduals(*frame, c, &r0, &gates);
   const long n = static_cast<long>(r0.size());
@@ -166,6 +172,7 @@ bool CameraPoseCorrector::solve() {
   long nuisance = 2;  // roll, pitch; plus each frame's heading and each arc's centre
   for (const Frame& f : frames_) {
     nuisance += (f.observations.empty() ? 0 : 1) + 2 * static_cast<long>(f.arcs.size());
+    for (const MapTiltObservation& map : f.map) nuisance += map.inliers() > 0 ? 3 : 0;
   }
   const long dof = residual_count - nuisance;
   const double scale = dof > 0 ? std::max(1.0, chi2 / static_cast<double>(dof)) : 1e6;
@@ -175,9 +182,38 @@ bool CameraPoseCorrector::solve() {
   return true;
 }
 
+std::optional<MapTiltObservation> CameraPoseCorrector::mapObservation(
+    const CorrectorMapInput& input, const Pose3& recorded) const {
+  if (!config_.map.enabled || !field_ || !input.rays || !input.field_T_robot) return std::nullopt;
+  const Pose2& guess = *input.field_T_robot;
+  if (!std::isfinite(guess.x) || !std::isfinite(guess.y) || !std::isfinite(guess.theta)) {
+    return std::nullopt;
+  }
+  GroundProjectionConfig in_range;
+  in_range.max_range_m = config_.map.max_range_m;
+  in_range.min_depression_rad = 0.0;
+  std::vector<const SpotRay*> near;
+  for (const SpotRay& ray : *input.rays) {
+    if (rayToGround(ray.ray_camera, corrected(recorded), in_range)) near.push_back(&ray);
+  }
+  const size_t wanted = static_cast<size_t>(std::max(1, config_.map.max_points_per_frame));
+  if (near.size() < static_cast<size_t>(config_.map.min_inliers)) return std::nullopt;
+  std::vector<Eigen::Vector3d> rays;
+  std::vector<double> sigmas;
+  const double stride = std::max(1.0, static_cast<double>(near.size()) / wanted);
+  for (double k = 0.0; k < static_cast<double>(near.size()); k += stride) {
+    const SpotRay& ray = *near[static_cast<size_t>(k)];
+    const auto p = rayToGround(ray.ray_camera, corrected(recorded), in_range);
+    const double range_2m = 0.5 * p->norm();
+    rays.push_back(ray.ray_camera);
+    sigmas.push_back(config_.min_point_sigma_m * (1.0 + range_2m * range_2m));
+  }
+  return MapTiltObservation(std::move(rays), std::move(sigmas), *input.field_T_robot);
+}
+
 bool CameraPoseCorrector::update(const std::vector<GroundSegment>& segments,
-                                 const std::vector<CircleCandidate>& circles,
-                                 const Pose3& recorded) {
+                                 const std::vector<CircleCandidate>& circles, const Pose3& recorded,
+                                 const CorrectorMapInput& map_input) {
   if (!config_.enabled) return false;
   std::vector<const GroundSegment*> used;
   for (const GroundSegment& s : segments) {
@@ -207,14 +243,23 @@ bool CameraPoseCorrector::update(const std::vector<GroundSegment>& segments,
           {circle.rays_camera, config_.min_point_sigma_m * (1.0 + range_2m * range_2m)});
     }
   }
-  if (!frame.observations.empty() || !frame.arcs.empty()) frames_.push_back(std::move(frame));
+  if (auto map = mapObservation(map_input, recorded)) frame.map.push_back(std::move(*map));
+  const bool frame_added = !frame.observations.empty() || !frame.arcs.empty() || !frame.map.empty();
+  if (frame_added) frames_.push_back(std::move(frame));
   while (static_cast<int>(frames_.size()) > std::max(1, config_.window_frames)) frames_.pop_front();
   if (frames_.empty()) return false;
 
-  if (!solve()) return false;
+  const bool solved = solve();
+  // The frame just added was associated in solve()'s first pass (it had never been linearised).
+  last_map_inliers_ = 0;
+  if (!frames_.empty() && !frames_.back().map.empty() && frame_added) {
+    last_map_inliers_ = frames_.back().map.front().inliers();
+  }
+  if (!solved) return false;
   const bool enough = static_cast<int>(frames_.size()) >= config_.min_frames;
   for (int k = 0; k < 2; ++k) {
-    const bool significant = std::abs(estimate_(k)) >= config_.significance_sigmas * sigma_(k);
+    const bool significant = std::abs(estimate_(k)) >= config_.significance_sigmas * sigma_(k) &&
+                             std::abs(estimate_(k)) >= config_.min_correction_rad;
     applied_(k) = enough && significant ? estimate_(k) : 0.0;
   }
   return true;

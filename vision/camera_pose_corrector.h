@@ -3,11 +3,16 @@
 #include <Eigen/Core>
 #include <deque>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <vector>
 
+#include "field_models/field_model.h"
+#include "field_models/pose2.h"
 #include "field_models/pose3.h"
 #include "vision/ground_projection.h"
 #include "vision/line_segments.h"
+#include "vision/map_tilt_observation.h"
 
 namespace houghloc {
 
@@ -49,6 +54,20 @@ struct CameraPoseCorrectionConfig {
                                         ///< information, scaled by the residual chi^2 when that
                                         ///< exceeds 1) away from 0: with an exact calibration the
                                         ///< line geometry of a few frames must not move the pose
+  double min_correction_rad = 3e-4;     ///< smaller estimates are not applied however certain
+                                        ///< (0.017 deg moves a point at 3 m by 3 mm): points
+                                        ///< matched to the map resolve the tilt to a few
+                                        ///< thousandths of a degree, finer than the line spots'
+                                        ///< own sub-millimetre biases
+  MapTiltConfig map;                    ///< points matched to the map, in frames that come with
+                                        ///< a field pose (the localizer's)
+};
+
+/// What one frame adds to the corrector besides its segments and arcs: the line spots' rays
+/// and, when the localizer tracks the robot, its field pose for this frame.
+struct CorrectorMapInput {
+  const std::vector<SpotRay>* rays = nullptr;  ///< camera frame
+  std::optional<Pose2> field_T_robot;          ///< none: the frame adds no map residuals
 };
 
 /// Online estimate of a roll and pitch error of the recorded camera pose (DESIGN §3 Pose3 angles)
@@ -71,11 +90,17 @@ class CameraPoseCorrector {
   /// any pose they were fitted with is fine) and re-solves; returns whether the window
   /// constrained the estimate.
   bool update(const std::vector<GroundSegment>& segments,
-              const std::vector<CircleCandidate>& circles, const Pose3& recorded);
+              const std::vector<CircleCandidate>& circles, const Pose3& recorded,
+              const CorrectorMapInput& map = {});
   bool update(const std::vector<GroundSegment>& segments, const Pose3& recorded) {
     return update(segments, {}, recorded);
   }
 
+  /// The field map that frames with a field pose are matched against (none: map residuals off).
+  void setFieldModel(std::shared_ptr<const FieldModel> field) { field_ = std::move(field); }
+
+  /// Points of the last frame matched to the map (0: none, or its field pose was not trusted).
+  int lastMapInliers() const { return last_map_inliers_; }
   /// (roll, pitch) correction applied by corrected(), rad.
   const Eigen::Vector2d& correction() const { return applied_; }
   /// The estimate before the min_frames / significance gates, rad.
@@ -97,6 +122,7 @@ class CameraPoseCorrector {
     Pose3 recorded;
     std::vector<Observation> observations;
     std::vector<ArcObservation> arcs;
+    std::vector<MapTiltObservation> map;  ///< none or one
     /// Whitened residuals r (NaN: unusable) and their Jacobian at correction `at`; gates in
     /// sigmas. The solver uses r + J (c - at).
     Eigen::Vector2d at = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
@@ -116,8 +142,14 @@ class CameraPoseCorrector {
   /// IRLS Gauss-Newton on the linearised frames from estimate_; false on a numerical breakdown.
   bool solve();
 
+  /// The frame's map observation from the spots within range (every k-th of them).
+  std::optional<MapTiltObservation> mapObservation(const CorrectorMapInput& input,
+                                                   const Pose3& recorded) const;
+
   CameraPoseCorrectionConfig config_;
+  std::shared_ptr<const FieldModel> field_;
   std::deque<Frame> frames_;
+  int last_map_inliers_ = 0;
   Eigen::Vector2d estimate_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d applied_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d sigma_ = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());

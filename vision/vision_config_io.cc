@@ -63,7 +63,18 @@ ConfigSection visionSection(VisionConfig& c) {
          HL_MEMBER(c.pose_correction, relinearize_rad), HL_MEMBER(c.pose_correction, min_frames),
          HL_MEMBER(c.pose_correction, use_circles),
          HL_MEMBER(c.pose_correction, max_circle_residual_m),
-         HL_MEMBER(c.pose_correction, significance_sigmas)}}},
+         HL_MEMBER(c.pose_correction, significance_sigmas),
+         HL_MEMBER(c.pose_correction, min_correction_rad)},
+        {{"map",
+          {{HL_MEMBER(c.pose_correction.map, enabled),
+            HL_MEMBER(c.pose_correction.map, max_points_per_frame),
+            HL_MEMBER(c.pose_correction.map, max_range_m),
+            HL_MEMBER(c.pose_correction.map, search_radius_m),
+            HL_MEMBER(c.pose_correction.map, gate_m), HL_MEMBER(c.pose_correction.map, min_inliers),
+            HL_MEMBER(c.pose_correction.map, min_inlier_share),
+            HL_MEMBER(c.pose_correction.map, pose_fit_iterations),
+            HL_MEMBER(c.pose_correction.map, max_pose_shift_m),
+            HL_MEMBER(c.pose_correction.map, max_pose_turn_rad)}}}}}},
   };
   return section;
 }

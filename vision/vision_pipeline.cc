@@ -41,7 +41,7 @@ VisionPipeline::VisionPipeline(const CameraIntrinsics& intrinsics, const VisionC
       corrector_(correctorConfig(config)) {}
 
 VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_camera,
-                                     std::int64_t t_us) {
+                                     std::int64_t t_us, const std::optional<Pose2>& field_T_robot) {
   if (!robot_T_camera.isFinite()) {
     throw std::invalid_argument("robot_T_camera is not finite (NaN or infinite component)");
   }
@@ -84,7 +84,8 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   diag.time_project_ms = msSince(&step);
   result.features = fitLineFeatures(all_rays, pose, config_.projection, config_.segments);
   diag.pose_correction_updated =
-      corrector_.update(result.features.segments, result.features.circles, robot_T_camera);
+      corrector_.update(result.features.segments, result.features.circles, robot_T_camera,
+                        {&all_rays, field_T_robot});
   const Pose3 refined = corrector_.corrected(robot_T_camera);
   if (!samePose(refined, pose)) {
     result.robot_T_camera_used = refined;
@@ -105,6 +106,7 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
                               refined.pitch - robot_T_camera.pitch};
   diag.pose_correction_estimate_rad = corrector_.estimate();
   diag.pose_correction_sigma_rad = corrector_.estimateSigma();
+  diag.pose_correction_map_inliers = corrector_.lastMapInliers();
   diag.time_features_ms = msSince(&step);
 
   result.ground.points = projectSpots(rays, result.robot_T_camera_used, camera_id_,

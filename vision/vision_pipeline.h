@@ -2,7 +2,9 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "field_models/ground_points.h"
@@ -50,6 +52,7 @@ struct VisionDiagnostics {
   Eigen::Vector2d pose_correction_estimate_rad = Eigen::Vector2d::Zero();
   Eigen::Vector2d pose_correction_sigma_rad =
       Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  int pose_correction_map_inliers = 0;  ///< this frame's points matched to the map (0: none)
   double time_total_ms = 0.0;
   double time_color_ms = 0.0;     ///< conversion, horizon, field colour, boundary
   double time_spots_ms = 0.0;     ///< width model, scan grid, spot detection
@@ -77,7 +80,16 @@ class VisionPipeline {
 
   /// image: BGR8 (CV_8UC3) or YUYV (CV_8UC2) of the intrinsics' size. Throws
   /// std::invalid_argument for another size or type and for a non-finite camera pose.
-  VisionResult process(const cv::Mat& image, const Pose3& robot_T_camera, std::int64_t t_us = 0);
+  /// field_T_robot: where the localizer puts the robot at this frame (its track, predicted
+  /// with odometry), when it has one; with setFieldModel it lets the pitch/roll corrector match
+  /// the line points to the map.
+  VisionResult process(const cv::Mat& image, const Pose3& robot_T_camera, std::int64_t t_us = 0,
+                       const std::optional<Pose2>& field_T_robot = std::nullopt);
+
+  /// The map the pitch/roll corrector matches points against in frames with a field pose.
+  void setFieldModel(std::shared_ptr<const FieldModel> field) {
+    corrector_.setFieldModel(std::move(field));
+  }
 
   const VisionConfig& config() const { return config_; }
   const CameraModel& camera() const { return camera_; }

@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <random>
 #include <vector>
 
+#include "field_models/standard_fields.h"
 #include "vision/camera_presets.h"
 #include "vision/line_width_model.h"
 
@@ -125,6 +128,80 @@ TEST(CameraPoseCorrector, WaitsForEnoughFramesAndIgnoresSingleLines) {
 
 /// The interpolated width model against the camera model's exact widths, for every preset at
 /// its mount pose, including the steep NAO bottom camera whose horizon lies above the image.
+/// Line points of `field` that a camera at field_T_robot sees 0.5-4 m ahead (within +-30 deg),
+/// one every 5 cm, as spot rays of the true camera pose with 1 mm ground noise.
+std::vector<SpotRay> mapSpotRays(const FieldModel& field, const Pose2& field_T_robot,
+                                 const Pose3& true_pose, std::mt19937* rng) {
+  std::normal_distribution<double> noise(0.0, 0.001);
+  const Eigen::Matrix3d camera_R_robot = true_pose.rotation().transpose();
+  const Eigen::Vector3d camera(true_pose.x, true_pose.y, true_pose.z);
+  const Pose2 robot_T_field = field_T_robot.inverse();
+  std::vector<SpotRay> rays;
+  for (const Segment2& segment : field.segments) {
+    const int steps = static_cast<int>(segment.length() / 0.05);
+    for (int k = 0; k <= steps; ++k) {
+      const Eigen::Vector2d p_field = segment.a + (segment.b - segment.a) * k / std::max(1, steps);
+      Eigen::Vector2d p = robot_T_field.transform(p_field);
+      p += Eigen::Vector2d(noise(*rng), noise(*rng));
+      if (p.norm() < 0.5 || p.norm() > 4.0 || std::abs(std::atan2(p.y(), p.x())) > 0.5) continue;
+      SpotRay ray;
+      ray.ray_camera = camera_R_robot * (Eigen::Vector3d(p.x(), p.y(), 0.0) - camera);
+      rays.push_back(ray);
+    }
+  }
+  return rays;
+}
+
+/// The robot walks through the SPL penalty area, the localizer's pose a few cm off.
+TEST(CameraPoseCorrector, MatchingPointsToTheMapPinsTheTiltDown) {
+  const FieldModel field = makeStandardField("spl");
+  const Pose3 true_pose = cameraPreset("nao-top").robot_T_camera;
+  Pose3 recorded = true_pose;
+  recorded.roll += 1.0 * kDeg;
+  recorded.pitch += 2.0 * kDeg;
+  CameraPoseCorrector with_map(enabledConfig()), without_map(enabledConfig());
+  with_map.setFieldModel(std::make_shared<const FieldModel>(field));
+  std::mt19937 rng(9);
+  int matched_frames = 0;
+  for (int frame = 0; frame < 30; ++frame) {
+    const Pose2 field_T_robot(-2.2 - 0.04 * frame, 0.8 - 0.03 * frame, 2.8 + 0.02 * frame);
+    const std::vector<SpotRay> rays = mapSpotRays(field, field_T_robot, true_pose, &rng);
+    const Pose2 localizer_pose = field_T_robot * Pose2(0.03, -0.02, 0.01);
+    const std::vector<GroundSegment> segments = gridSegments(true_pose, 0.1 * frame, &rng);
+    with_map.update(segments, {}, recorded, {&rays, localizer_pose});
+    without_map.update(segments, {}, recorded);
+    if (with_map.lastMapInliers() > 0) ++matched_frames;
+  }
+  EXPECT_GE(matched_frames, 20);
+  const Eigen::Vector2d truth(-1.0 * kDeg, -2.0 * kDeg);
+  const double error_with = (with_map.correction() - truth).cwiseAbs().maxCoeff();
+  const double error_without = (without_map.correction() - truth).cwiseAbs().maxCoeff();
+  EXPECT_LT(error_with, 0.003 * kDeg);
+  EXPECT_LT(error_with, 0.5 * error_without);
+}
+
+TEST(CameraPoseCorrector, IgnoresAFieldPoseThatDoesNotFitTheLines) {
+  const FieldModel field = makeStandardField("spl");
+  const Pose3 true_pose = cameraPreset("nao-top").robot_T_camera;
+  CameraPoseCorrector corrector(enabledConfig());
+  corrector.setFieldModel(std::make_shared<const FieldModel>(field));
+  std::mt19937 rng(10);
+  const Pose2 field_T_robot(-2.5, 0.5, 3.0);
+  const std::vector<SpotRay> rays = mapSpotRays(field, field_T_robot, true_pose, &rng);
+  ASSERT_GT(rays.size(), 40u);
+  corrector.update({}, {}, true_pose, {&rays, field_T_robot});
+  EXPECT_GT(corrector.lastMapInliers(), 30);  // the right pose: matched
+  for (const Pose2& wrong :
+       {field_T_robot * Pose2(0.8, 0.4, 0.0), field_T_robot * Pose2(0.0, 0.0, 0.3)}) {
+    corrector.update({}, {}, true_pose, {&rays, wrong});
+    EXPECT_EQ(corrector.lastMapInliers(), 0) << wrong.x << " " << wrong.y << " " << wrong.theta;
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  corrector.update({}, {}, true_pose, {&rays, Pose2(nan, 0.0, 0.0)});
+  EXPECT_EQ(corrector.lastMapInliers(), 0);
+  EXPECT_EQ(corrector.correction(), Eigen::Vector2d::Zero());
+}
+
 TEST(LineWidthModel, MatchesTheCameraModelForEveryPreset) {
   for (const std::string& name : cameraPresetNames()) {
     const CameraPreset preset = cameraPreset(name);

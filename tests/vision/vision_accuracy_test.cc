@@ -11,6 +11,8 @@
 #include <string>
 
 #include "field_models/field_distance.h"
+#include "localization/localizer.h"
+#include "tools/offline/field_pose_feedback.h"
 #include "tools/offline/vision_metrics.h"
 #include "tools/recording/recording.h"
 #include "vision/vision_pipeline.h"
@@ -23,16 +25,28 @@ namespace fs = std::filesystem;
 struct FolderRun {
   VisionMetrics metrics;
   double median_error_3m = 0.0;  ///< median distance to the nearest line of all points < 3 m
+  double median_error_3m_second_half = 0.0;  ///< the same over the second half of the frames
+  int map_frames = 0;  ///< frames whose points the corrector matched to the map
+  size_t frames = 0;
   Eigen::Vector2d final_correction = Eigen::Vector2d::Zero();
 };
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
 /// Runs the pipeline over a fixture folder; the pitch/roll corrector as in the default config
 /// unless `correct_pose` says otherwise. `pose_error` (roll, pitch; rad) is added to the recorded
-/// camera pose, as the renderer's camera_pose_error.bias would.
+/// camera pose, as the renderer's camera_pose_error.bias would. With `localizer_feedback` a
+/// Localizer runs on the points and its track goes back to the pipeline (FieldPoseFeedback, as
+/// in houghloc-offline's full mode), so the corrector can match the points to the map.
 FolderRun runFolder(const std::string& name, std::optional<bool> correct_pose = std::nullopt,
-                    const Eigen::Vector2d& pose_error = Eigen::Vector2d::Zero()) {
+                    const Eigen::Vector2d& pose_error = Eigen::Vector2d::Zero(),
+                    bool localizer_feedback = false) {
   const std::string folder = std::string(HOUGHLOC_VISION_FIXTURES) + "/" + name;
   const Recording rec = readRecording(folder);
   EXPECT_TRUE(rec.field.has_value()) << folder;
@@ -44,16 +58,33 @@ FolderRun runFolder(const std::string& name, std::optional<bool> correct_pose = 
   }
   if (correct_pose) config.pose_correction.enabled = *correct_pose;
   VisionPipeline pipeline(rec.intrinsicsFor(rec.frames.front()), config);
+  std::optional<Localizer> localizer;
+  FieldPoseFeedback feedback(0);
+  if (localizer_feedback) {
+    pipeline.setFieldModel(std::make_shared<const FieldModel>(*rec.field));
+    localizer.emplace(*rec.field);
+  }
   VisionMetricsAccumulator metrics(*rec.field);
-  std::vector<double> errors;
+  std::vector<double> errors, second_half_errors;
   FolderRun run;
-  for (const FrameRecord& frame : rec.frames) {
+  for (size_t index = 0; index < rec.frames.size(); ++index) {
+    const FrameRecord& frame = rec.frames[index];
+    const int i = static_cast<int>(index);
     const cv::Mat image = cv::imread((fs::path(folder) / frame.image).string(), cv::IMREAD_COLOR);
     EXPECT_FALSE(image.empty()) << frame.image;
     Pose3 recorded = frame.robot_T_camera;
     recorded.roll += pose_error.x();
     recorded.pitch += pose_error.y();
-    const VisionResult result = pipeline.process(image, recorded, frame.t_us);
+    const std::optional<Pose2> field_T_robot =
+        localizer ? feedback.guessFor(i, frame.odometry) : std::nullopt;
+    const VisionResult result = pipeline.process(image, recorded, frame.t_us, field_T_robot);
+    if (localizer) {
+      feedback.publish(i, frame.odometry,
+                       localizer->process(frame.t_us, frame.odometry, {recorded}, result.ground));
+      feedback.consumed(i);
+    }
+    if (result.diagnostics.pose_correction_map_inliers > 0) ++run.map_frames;
+    ++run.frames;
     const auto truth = groundTruthAt(rec.ground_truth, frame.t_us);
     if (!truth) continue;
     // "Within the camera view" uses the recorded pose, exact in all but the pose-error fixture.
@@ -62,15 +93,14 @@ FolderRun runFolder(const std::string& name, std::optional<bool> correct_pose = 
     for (const GroundPoint& p : result.ground.points) {
       if (p.p_robot.norm() < 3.0) {
         errors.push_back(nearestFeature(*rec.field, truth->transform(p.p_robot)).distance_m);
+        if (2 * index >= rec.frames.size()) second_half_errors.push_back(errors.back());
       }
     }
     run.final_correction = result.diagnostics.pose_correction_rad;
   }
   run.metrics = metrics.result();
-  if (!errors.empty()) {
-    std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
-    run.median_error_3m = errors[errors.size() / 2];
-  }
+  run.median_error_3m = median(errors);
+  run.median_error_3m_second_half = median(second_half_errors);
   return run;
 }
 
@@ -137,19 +167,22 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 /// The corrector is on by default: on exact extrinsics it must change nothing (the accuracy
-/// cases above run with it, too). Seed 201 is the bench recording's, on which an earlier version
-/// estimated a wrong 0.4 deg pitch.
+/// cases above run with it, too), with or without the localizer's track to match points to the
+/// map. Seed 201 is the bench recording's, on which an earlier version estimated a wrong 0.4 deg
+/// pitch.
 TEST(VisionAccuracy, PitchRollCorrectionLeavesExactExtrinsicsAlone) {
   for (const char* name : {"spl_nao-top_exact", "spl_nao-top_exact_seed201", "spl_nao-top_walk_300",
                            "spl_nao-top_walk_robots_300"}) {
     const FolderRun off = runFolder(name, false);
-    const FolderRun on = runFolder(name, true);
     print(std::string(name) + ", corrector off", off);
-    print(std::string(name) + ", corrector on", on);
-    printCorrection(on);
-    EXPECT_EQ(on.final_correction, Eigen::Vector2d::Zero()) << name;
-    EXPECT_EQ(on.metrics.points, off.metrics.points) << name;
-    EXPECT_EQ(on.median_error_3m, off.median_error_3m) << name;
+    for (bool feedback : {false, true}) {
+      const FolderRun on = runFolder(name, true, Eigen::Vector2d::Zero(), feedback);
+      print(std::string(name) + (feedback ? ", corrector on, map" : ", corrector on"), on);
+      printCorrection(on);
+      EXPECT_EQ(on.final_correction, Eigen::Vector2d::Zero()) << name << " " << feedback;
+      EXPECT_EQ(on.metrics.points, off.metrics.points) << name << " " << feedback;
+      EXPECT_EQ(on.median_error_3m, off.median_error_3m) << name << " " << feedback;
+    }
   }
 }
 
@@ -158,12 +191,18 @@ TEST(VisionAccuracy, PitchRollCorrectionLeavesExactExtrinsicsAlone) {
 /// spl_nao-top_pose-error is rendered with the error (seed 107; its walk never sees the centre
 /// circle, so only the lines' directions constrain the tilt); on the other walks the same error
 /// is added to the exact recorded pose here, and the centre circle is in view.
+/// Each recording runs twice: vision alone (the lines' directions and the circle), and with a
+/// Localizer whose track goes back to the corrector (points matched to the map). "Converged" is
+/// the median over the second half of the frames, against the same frames without the error.
 struct CorrectionCase {
   const char* corrupted;  ///< recording whose recorded pose is off (or the exact one)
   const char* exact;      ///< the same frames with exact extrinsics
   bool add_error;         ///< add the 1 / 2 deg error here
-  double max_ratio;       ///< corrected median / error-free median asserted (measured in docs)
-  double max_error_deg;   ///< |final estimate - truth| per axis
+  // Corrected median / error-free median asserted (measured values in docs/vision.md):
+  double max_ratio_vision_only;  ///< all frames, vision alone
+  double max_ratio_map;          ///< all frames, with the localizer's track
+  double max_converged_map;      ///< second half, with the localizer's track
+  double max_error_deg;          ///< |final estimate - truth| per axis, with the track
 };
 
 void PrintTo(const CorrectionCase& c, std::ostream* os) { *os << c.corrupted; }
@@ -176,39 +215,56 @@ TEST_P(PitchRollCorrection, RemovesAConstantTiltError) {
       c.add_error ? Eigen::Vector2d(kDeg, 2.0 * kDeg) : Eigen::Vector2d::Zero();
   const FolderRun exact = runFolder(c.exact, false);
   const FolderRun uncorrected = runFolder(c.corrupted, false, error);
-  const FolderRun corrected = runFolder(c.corrupted, true, error);
+  const FolderRun vision_only = runFolder(c.corrupted, true, error);
+  const FolderRun map = runFolder(c.corrupted, true, error, true);
   print("exact", exact);
   print("2/1 deg error, uncorrected", uncorrected);
-  print("2/1 deg error, corrected", corrected);
-  printCorrection(corrected);
-  std::printf("   corrected / error-free median < 3 m: %.2f (uncorrected %.0f)\n",
-              corrected.median_error_3m / exact.median_error_3m,
-              uncorrected.median_error_3m / exact.median_error_3m);
-  EXPECT_LT(corrected.median_error_3m, c.max_ratio * exact.median_error_3m);
-  EXPECT_GT(corrected.metrics.precision, 0.9);  // the first frames are still uncorrected
-  EXPECT_NEAR(corrected.final_correction.x(), -1.0 * kDeg, c.max_error_deg * kDeg);
-  EXPECT_NEAR(corrected.final_correction.y(), -2.0 * kDeg, c.max_error_deg * kDeg);
+  print("2/1 deg error, corrected, vision only", vision_only);
+  printCorrection(vision_only);
+  print("2/1 deg error, corrected, localizer's track", map);
+  printCorrection(map);
+  const auto ratio = [&](const FolderRun& run) {
+    return run.median_error_3m / exact.median_error_3m;
+  };
+  const auto converged = [&](const FolderRun& run) {
+    return run.median_error_3m_second_half / exact.median_error_3m_second_half;
+  };
+  std::printf(
+      "   corrected / error-free median < 3 m: vision only %.2f (converged %.2f), with the "
+      "track %.2f (converged %.2f, %d of %zu frames matched to the map); uncorrected %.0f\n",
+      ratio(vision_only), converged(vision_only), ratio(map), converged(map), map.map_frames,
+      map.frames, ratio(uncorrected));
+  EXPECT_LT(ratio(vision_only), c.max_ratio_vision_only);
+  EXPECT_LT(ratio(map), c.max_ratio_map);
+  EXPECT_LT(converged(map), c.max_converged_map);
+  EXPECT_GT(map.metrics.precision, 0.9);  // the first frames are still uncorrected
+  EXPECT_NEAR(map.final_correction.x(), -1.0 * kDeg, c.max_error_deg * kDeg);
+  EXPECT_NEAR(map.final_correction.y(), -2.0 * kDeg, c.max_error_deg * kDeg);
 }
 
-// Measured ratios (docs/vision.md), 40 frames: 11.7 (lines only), 1.08 (kid), 2.0, 3.3; over
-// 300 frames (10 s of walking): 1.13 with the robots walk of seed 101 (issue target 1.5 met),
-// 2.17 on the plain walk of seed 107 (not met: the lines' directions leave ~0.01 deg of pitch).
-// Other presets, 40 frames: adult walk 2.19, msl adult random poses 0.84, spl2019 nao-top random
-// poses 2.41; nao-bottom (4.7 points per frame, no segment of 0.5 m) is never corrected.
+// Measured ratios: docs/vision.md. The 1.5 of issue 5 is asserted on the converged ratio with
+// the localizer's track wherever it was met; the other bounds are the measured values plus a
+// margin. Random-pose recordings (msl, spl2019) give the tracker no track to follow.
 INSTANTIATE_TEST_SUITE_P(
     Renders, PitchRollCorrection,
-    ::testing::Values(
-        CorrectionCase{"spl_nao-top_pose-error", "spl_nao-top_exact", false, 15.0, 0.25},
-        CorrectionCase{"kid_kid-wide_walk_robots", "kid_kid-wide_walk_robots", true, 1.5, 0.02},
-        CorrectionCase{"spl_nao-top_walk_robots", "spl_nao-top_walk_robots", true, 2.5, 0.03},
-        CorrectionCase{"spl_nao-top_exact_seed201", "spl_nao-top_exact_seed201", true, 4.0, 0.05},
-        CorrectionCase{"spl_nao-top_walk_robots_300", "spl_nao-top_walk_robots_300", true, 1.5,
-                       0.02},
-        CorrectionCase{"spl_nao-top_walk_300", "spl_nao-top_walk_300", true, 2.5, 0.03},
-        CorrectionCase{"adult_adult_walk_robots", "adult_adult_walk_robots", true, 2.5, 0.03},
-        CorrectionCase{"msl_adult_random_robots", "msl_adult_random_robots", true, 1.5, 0.03},
-        CorrectionCase{"spl2019_nao-top_random_robots", "spl2019_nao-top_random_robots", true, 3.0,
-                       0.03}),
+    ::testing::Values(CorrectionCase{"spl_nao-top_pose-error", "spl_nao-top_exact", false, 15.0,
+                                     15.0, 15.0, 0.25},
+                      CorrectionCase{"kid_kid-wide_walk_robots", "kid_kid-wide_walk_robots", true,
+                                     1.5, 1.5, 1.5, 0.02},
+                      CorrectionCase{"spl_nao-top_walk_robots", "spl_nao-top_walk_robots", true,
+                                     2.5, 1.5, 1.5, 0.03},
+                      CorrectionCase{"spl_nao-top_exact_seed201", "spl_nao-top_exact_seed201", true,
+                                     4.0, 1.6, 1.5, 0.05},
+                      CorrectionCase{"spl_nao-top_walk_robots_300", "spl_nao-top_walk_robots_300",
+                                     true, 1.5, 1.5, 1.5, 0.02},
+                      CorrectionCase{"spl_nao-top_walk_300", "spl_nao-top_walk_300", true, 2.5, 2.0,
+                                     1.5, 0.03},
+                      CorrectionCase{"adult_adult_walk_robots", "adult_adult_walk_robots", true,
+                                     2.5, 2.2, 1.5, 0.03},
+                      CorrectionCase{"msl_adult_random_robots", "msl_adult_random_robots", true,
+                                     1.5, 1.5, 1.5, 0.03},
+                      CorrectionCase{"spl2019_nao-top_random_robots",
+                                     "spl2019_nao-top_random_robots", true, 3.0, 3.0, 3.0, 0.03}),
     [](const auto& info) {
       std::string name = info.param.corrupted;
       std::replace(name.begin(), name.end(), '-', '_');

@@ -50,7 +50,7 @@ const FieldModel& requireField(const OfflineContext& context) {
 }
 
 int runLocalizationMode(const OfflineContext& context, const std::string& title, bool global_only,
-                        const LocalizationStep& step) {
+                        const LocalizationStep& step, FieldPoseFeedback* feedback) {
   requireField(context);
   const auto wall_start = std::chrono::steady_clock::now();
   const fs::path out(context.out_dir);
@@ -67,32 +67,36 @@ int runLocalizationMode(const OfflineContext& context, const std::string& title,
                             context.end_frame - context.first_frame, context.options.quiet);
   RunStats stats;
   int done = 0;
-  runVisionStage(context, context.options.threads, overlays.active(), [&](VisionFrame& v) {
-    if (v.skipped) {
-      progress.warn(v.problem);
-      ++stats.skipped;
-    } else {
-      ++stats.processed;
-    }
-    const LocalizationStepResult r = step(v);
-    estimates.write(r.estimate);
-    if (points) writePoints(points.get(), v);
-    const auto n = static_cast<std::int64_t>(v.result.ground.points.size());
-    timing.writeRow({timing.format(v.frame->t_us), timing.format(v.vision_ms),
-                     timing.format(r.localization_ms), timing.format(r.global_ms), timing.format(n),
-                     timing.format(static_cast<std::int64_t>(r.estimate.hypotheses.size())),
-                     timing.format(v.load_ms), v.skipped ? "1" : "0"});
-    stats.points += n;
-    stats.load_ms.push_back(v.load_ms);
-    if (!v.skipped) stats.vision_ms.push_back(v.vision_ms);
-    stats.localization_ms.push_back(r.localization_ms);
-    stats.global_ms.push_back(r.global_ran ? r.global_ms : 0.0);
-    if (r.global_ran) ++stats.global_runs;
-    stats.total_ms.push_back(v.load_ms + v.vision_ms + r.localization_ms);
-    ++stats.status_counts[r.estimate.status];
-    if (overlays.active()) overlays.write(*v.frame, overlayFor(context, v, r.estimate));
-    progress.update(++done);
-  });
+  runVisionStage(
+      context, context.options.threads, overlays.active(),
+      [&](VisionFrame& v) {
+        if (v.skipped) {
+          progress.warn(v.problem);
+          ++stats.skipped;
+        } else {
+          ++stats.processed;
+        }
+        const LocalizationStepResult r = step(v);
+        estimates.write(r.estimate);
+        if (points) writePoints(points.get(), v);
+        const auto n = static_cast<std::int64_t>(v.result.ground.points.size());
+        timing.writeRow({timing.format(v.frame->t_us), timing.format(v.vision_ms),
+                         timing.format(r.localization_ms), timing.format(r.global_ms),
+                         timing.format(n),
+                         timing.format(static_cast<std::int64_t>(r.estimate.hypotheses.size())),
+                         timing.format(v.load_ms), v.skipped ? "1" : "0"});
+        stats.points += n;
+        stats.load_ms.push_back(v.load_ms);
+        if (!v.skipped) stats.vision_ms.push_back(v.vision_ms);
+        stats.localization_ms.push_back(r.localization_ms);
+        stats.global_ms.push_back(r.global_ran ? r.global_ms : 0.0);
+        if (r.global_ran) ++stats.global_runs;
+        stats.total_ms.push_back(v.load_ms + v.vision_ms + r.localization_ms);
+        ++stats.status_counts[r.estimate.status];
+        if (overlays.active()) overlays.write(*v.frame, overlayFor(context, v, r.estimate));
+        progress.update(++done);
+      },
+      feedback);
   progress.finish();
   estimates.close();
   timing.close();

@@ -12,10 +12,11 @@
 #include "tools/offline/offline_context.h"
 #include "tools/offline/offline_options.h"
 
-int main(int argc, char **argv) {
+int main(int argc, char** argv) {
   using namespace houghloc;
-  CLI::App app{"houghloc-offline: runs houghloc on a recorded image folder "
-               "(DESIGN 5.2)"};
+  CLI::App app{
+      "houghloc-offline: runs houghloc on a recorded image folder "
+      "(DESIGN 5.2)"};
   OfflineOptions options;
   addOfflineOptions(app, &options);
   CLI11_PARSE(app, argc, argv);
@@ -26,30 +27,26 @@ int main(int argc, char **argv) {
       return 0;
     }
     if (options.folder.empty()) {
-      std::fprintf(
-          stderr,
-          "FOLDER is required\nRun with --help for more information.\n");
-      return 106; // CLI11's exit code for a missing required argument
+      std::fprintf(stderr, "FOLDER is required\nRun with --help for more information.\n");
+      return 106;  // CLI11's exit code for a missing required argument
     }
     const OfflineMode mode = offlineMode(options);
     if (mode == OfflineMode::kVisionOnly && !options.video_file.empty()) {
-      std::fprintf(stderr,
-                   "houghloc-offline: --video needs a localization mode\n");
+      std::fprintf(stderr, "houghloc-offline: --video needs a localization mode\n");
       return 2;
     }
     const OfflineContext context = loadOfflineContext(options);
-    if (options.evaluate_only)
-      return runEvaluateOnly(context, mode == OfflineMode::kGlobalOnly);
+    if (options.evaluate_only) return runEvaluateOnly(context, mode == OfflineMode::kGlobalOnly);
     switch (mode) {
-    case OfflineMode::kVisionOnly:
-      return runVisionOnly(context);
-    case OfflineMode::kGlobalOnly:
-      return runGlobalOnly(context);
-    case OfflineMode::kFull:
-      return runFull(context);
+      case OfflineMode::kVisionOnly:
+        return runVisionOnly(context);
+      case OfflineMode::kGlobalOnly:
+        return runGlobalOnly(context);
+      case OfflineMode::kFull:
+        return runFull(context);
     }
     return 2;
-  } catch (const std::exception &e) {
+  } catch (const std::exception& e) {
     std::fprintf(stderr, "houghloc-offline: error: %s\n", e.what());
     return 2;
   }

@@ -28,6 +28,8 @@ FrameEstimate toFrameEstimate(std::int64_t t_us, const LocalizationEstimate& est
 
 int runFull(const OfflineContext& context) {
   FullModeLocalizer localizer(context);
+  // The track goes back to vision: its pitch/roll corrector matches the points to the map there.
+  FieldPoseFeedback feedback(context.first_frame);
   const LocalizationStep step = [&](const VisionFrame& v) {
     LocalizationStepResult r;
     const auto start = std::chrono::steady_clock::now();
@@ -37,9 +39,10 @@ int runFull(const OfflineContext& context) {
     r.global_ms = estimate.global_ms;
     r.global_ran = estimate.global_ran;
     r.estimate = toFrameEstimate(v.frame->t_us, estimate);
+    feedback.publish(v.index, v.frame->odometry, estimate);
     return r;
   };
-  return runLocalizationMode(context, "houghloc-offline", false, step);
+  return runLocalizationMode(context, "houghloc-offline", false, step, &feedback);
 }
 
 }  // namespace houghloc

@@ -14,24 +14,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void prepareOutput(const std::string &dir) {
+void prepareOutput(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec)
-    throw std::runtime_error(dir +
-                             ": cannot create output folder: " + ec.message());
+  if (ec) throw std::runtime_error(dir + ": cannot create output folder: " + ec.message());
   const fs::path probe = fs::path(dir) / ".houghloc-write-test";
   {
     std::ofstream out(probe);
-    if (!out)
-      throw std::runtime_error(dir + ": output folder is not writable");
+    if (!out) throw std::runtime_error(dir + ": output folder is not writable");
   }
   fs::remove(probe, ec);
 }
 
-} // namespace
+}  // namespace
 
-OfflineContext loadOfflineContext(const OfflineOptions &options) {
+OfflineContext loadOfflineContext(const OfflineOptions& options) {
   OfflineContext context;
   context.options = options;
   if (!fs::is_directory(options.folder)) {
@@ -43,7 +40,7 @@ OfflineContext loadOfflineContext(const OfflineOptions &options) {
   } else if (!options.standard.empty()) {
     try {
       context.field = makeStandardField(options.standard);
-    } catch (const std::invalid_argument &e) {
+    } catch (const std::invalid_argument& e) {
       throw std::runtime_error(std::string("--standard: ") + e.what());
     }
   } else if (context.recording.field) {
@@ -55,7 +52,7 @@ OfflineContext loadOfflineContext(const OfflineOptions &options) {
   context.hints = convertHints(context.recording);
   if (context.field) {
     context.vision_config.line_width_m = context.field->line_width;
-    for (const Arc2 &arc : context.field->arcs) {
+    for (const Arc2& arc : context.field->arcs) {
       if (arc.isFullCircle() && arc.center.norm() < 1e-6) {
         context.vision_config.segments.circle_radius_m = arc.radius;
       }
@@ -65,15 +62,13 @@ OfflineContext loadOfflineContext(const OfflineOptions &options) {
   context.first_frame = std::min(options.start, frames);
   context.end_frame = options.end < 0 ? frames : std::min(options.end, frames);
   if (context.end_frame < context.first_frame) {
-    throw std::runtime_error("--end " + std::to_string(options.end) +
-                             " is before --start " +
+    throw std::runtime_error("--end " + std::to_string(options.end) + " is before --start " +
                              std::to_string(options.start));
   }
-  context.out_dir = options.out_dir.empty()
-                        ? (fs::path(options.folder) / "houghloc").string()
-                        : options.out_dir;
+  context.out_dir =
+      options.out_dir.empty() ? (fs::path(options.folder) / "houghloc").string() : options.out_dir;
   prepareOutput(context.out_dir);
   return context;
 }
 
-} // namespace houghloc
+}  // namespace houghloc

@@ -26,8 +26,10 @@ double msSince(Clock::time_point start) {
 /// Image loading and one VisionPipeline per camera id, fed strictly in frame order.
 class VisionWorker {
  public:
-  VisionWorker(const OfflineContext& context, bool keep_images)
-      : context_(context), keep_images_(keep_images) {}
+  VisionWorker(const OfflineContext& context, bool keep_images, FieldPoseFeedback* feedback)
+      : context_(context), keep_images_(keep_images), feedback_(feedback) {
+    if (feedback_ && context_.field) field_ = std::make_shared<const FieldModel>(*context_.field);
+  }
 
   VisionFrame process(int index) {
     const Recording& rec = context_.recording;
@@ -46,10 +48,14 @@ class VisionWorker {
     auto& pipeline = pipelines_[out.frame->camera_id];
     if (!pipeline) {
       pipeline = std::make_unique<VisionPipeline>(*out.intrinsics, context_.vision_config);
+      if (field_) pipeline->setFieldModel(field_);
     }
+    std::optional<Pose2> field_T_robot;
+    if (field_) field_T_robot = feedback_->guessFor(index, out.frame->odometry);
     const auto start = Clock::now();
     try {
-      out.result = pipeline->process(*image, out.frame->robot_T_camera, out.frame->t_us);
+      out.result =
+          pipeline->process(*image, out.frame->robot_T_camera, out.frame->t_us, field_T_robot);
     } catch (const std::invalid_argument& e) {
       throw std::runtime_error((fs::path(rec.folder) / out.frame->image).string() + ": " +
                                e.what());
@@ -62,6 +68,8 @@ class VisionWorker {
  private:
   const OfflineContext& context_;
   bool keep_images_;
+  FieldPoseFeedback* feedback_;
+  std::shared_ptr<const FieldModel> field_;  ///< set when there is feedback
   std::map<std::string, std::unique_ptr<VisionPipeline>> pipelines_;
 };
 
@@ -117,12 +125,16 @@ class FrameQueue {
 }  // namespace
 
 void runVisionStage(const OfflineContext& context, int threads, bool keep_images,
-                    const std::function<void(VisionFrame&)>& consume) {
-  VisionWorker worker(context, keep_images);
+                    const std::function<void(VisionFrame&)>& consume, FieldPoseFeedback* feedback) {
+  VisionWorker worker(context, keep_images, feedback);
+  const auto consumeAndReport = [&](VisionFrame& frame) {
+    consume(frame);
+    if (feedback) feedback->consumed(frame.index);
+  };
   if (threads <= 1) {
     for (int i = context.first_frame; i < context.end_frame; ++i) {
       VisionFrame frame = worker.process(i);
-      consume(frame);
+      consumeAndReport(frame);
     }
     return;
   }
@@ -141,9 +153,10 @@ void runVisionStage(const OfflineContext& context, int threads, bool keep_images
   });
   try {
     VisionFrame frame;
-    while (queue.pop(&frame)) consume(frame);
+    while (queue.pop(&frame)) consumeAndReport(frame);
   } catch (...) {
     queue.stop();
+    if (feedback) feedback->abort();  // the producer may wait for a frame never consumed
     producer.join();
     throw;
   }

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "tools/offline/field_pose_feedback.h"
 #include "tools/offline/offline_context.h"
 #include "vision/vision_pipeline.h"
 
@@ -27,8 +28,11 @@ struct VisionFrame {
 /// in order. threads == 2 runs vision (image decoding included) in a second thread, one frame
 /// ahead of `consume`: every VisionPipeline still sees the frames in the same order and
 /// `consume` is called with the same sequence, so the results equal the single-threaded run.
-/// An exception from either side stops both and is rethrown here.
+/// An exception from either side stops both and is rethrown here. With `feedback`, each frame's
+/// vision gets the localizer's field pose from it (the pipelines get the context's field) and
+/// every consumed frame is reported to it.
 void runVisionStage(const OfflineContext& context, int threads, bool keep_images,
-                    const std::function<void(VisionFrame&)>& consume);
+                    const std::function<void(VisionFrame&)>& consume,
+                    FieldPoseFeedback* feedback = nullptr);
 
 }  // namespace houghloc
