@@ -40,6 +40,7 @@ Pose3 CameraPoseCorrector::corrected(const Pose3& recorded) const {
 
 void CameraPoseCorrector::reset() {
   last_map_inliers_ = 0;
+  line_sigma_.setConstant(std::numeric_limits<double>::infinity());
   estimate_.setZero();
   applied_.setZero();
   sigma_.setConstant(std::numeric_limits<double>::infinity());
@@ -101,10 +102,28 @@ void CameraPoseCorrector::frameResiduals(const Frame& frame, const Eigen::Vector
   for (const MapTiltObservation& map : frame.map) map.residuals(pose, config_.map, out, gates);
 }
 
+double CameraPoseCorrector::mapRange(const Frame& frame) const {
+  // A tilt error u moves a ground point at range d by about u (d^2 + h^2) / h: only points it
+  // moves by less than half the gate can be matched to the right line. u is what the lines and
+  // arcs alone say; the map residuals must not vouch for themselves (matched at a wrong tilt
+  // and a localizer pose that absorbed it, they confirm that tilt).
+  const double u = line_sigma_.maxCoeff();
+  const double h = frame.recorded.z;
+  if (!(u > 0.0) || !(h > 0.0)) return 0.0;
+  const double d2 = 0.5 * config_.map.gate_m * h / u - h * h;
+  return d2 > 0.0 ? std::min(config_.map.max_range_m, std::sqrt(d2)) : 0.0;
+}
+
 void CameraPoseCorrector::linearize(Frame* frame, const Eigen::Vector2d& c) const {
-  // Map matches follow the tilt: a point at 4 m moves ~1 cm per relinearize_rad.
+  // Map matches follow the tilt (a point at 4 m moves ~1 cm per relinearize_rad) and reach as
+  // far as the tilt is known.
+  frame->map_range_m = mapRange(*frame);
   for (MapTiltObservation& map : frame->map) {
-    map.associate(*field_, withCorrection(frame->recorded, c), config_.map);
+    map.associate(*field_, withCorrection(frame->recorded, c), config_.map, frame->map_range_m);
+  }
+  frame->line_residuals = static_cast<long>(frame->observations.size());
+  for (const ArcObservation& arc : frame->arcs) {
+    frame->line_residuals += static_cast<long>(arc.rays.size());
   }
   std::vector<double> r0, gates;
   frameResiduals(*frame, c, &r0, &gates);
@@ -128,17 +147,23 @@ bool CameraPoseCorrector::solve() {
   const double prior = 1.0 / (config_.prior_sigma_rad * config_.prior_sigma_rad);
   Eigen::Vector2d c = estimate_;
   Eigen::Matrix2d information = Eigen::Matrix2d::Zero();
+  Eigen::Matrix2d line_information = Eigen::Matrix2d::Zero();  ///< of the lines and arcs alone
   double chi2 = 0.0;
   long residual_count = 0;
   // Re-linearise the frames the estimate moved away from, solve on the linear model, repeat
   // while the solution moves (only while converging from a large error).
   for (int pass = 0; pass < 3; ++pass) {
     for (Frame& frame : frames_) {
-      if (!((c - frame.at).cwiseAbs().maxCoeff() <= config_.relinearize_rad)) linearize(&frame, c);
+      const bool moved = !((c - frame.at).cwiseAbs().maxCoeff() <= config_.relinearize_rad);
+      // Also when the tilt is now known well enough to match points 20 % farther out.
+      const bool reach = !frame.map.empty() && frame.map_range_m < config_.map.max_range_m &&
+                         mapRange(frame) > 1.2 * frame.map_range_m + 0.05;
+      if (moved || reach) linearize(&frame, c);
     }
     const Eigen::Vector2d start = c;
     for (int it = 0; it <= config_.iterations; ++it) {
       information.setZero();
+      line_information.setZero();
       Eigen::Vector2d g = Eigen::Vector2d::Zero();
       chi2 = 0.0;
       residual_count = 0;
@@ -151,6 +176,7 @@ bool CameraPoseCorrector::solve() {
           // Huber as IRLS: weight = min(1, k / |r|) on the squared residual.
           const double w = std::min(1.0, config_.huber_sigmas / std::abs(r));
           information += w * j.transpose() * j;
+          if (i < frame.line_residuals) line_information += w * j.transpose() * j;
           g += w * j.transpose() * r;
           chi2 += w * r * r;
           ++residual_count;
@@ -179,6 +205,9 @@ bool CameraPoseCorrector::solve() {
   const Eigen::Matrix2d covariance =
       scale * (information + prior * Eigen::Matrix2d::Identity()).inverse();
   sigma_ = covariance.diagonal().cwiseSqrt();
+  line_sigma_ = (scale * (line_information + prior * Eigen::Matrix2d::Identity()).inverse())
+                    .diagonal()
+                    .cwiseSqrt();
   return true;
 }
 

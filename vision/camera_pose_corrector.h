@@ -79,6 +79,10 @@ struct CorrectorMapInput {
 /// each frame's own field direction (the robot's heading modulo 90 deg) is eliminated in closed
 /// form (weighted circular mean of 4 x direction), residuals are Huber-weighted in units of each
 /// segment's direction sigma. Yaw and height errors are not observable this way.
+/// Frames that come with the localizer's field pose (and a map, setFieldModel) add their line
+/// points' distances to the map lines (MapTiltObservation), each frame's field pose eliminated
+/// like its heading; points are matched only out to the range where the tilt, as well as the
+/// lines and arcs alone determine it, moves them by less than half the match gate.
 class CameraPoseCorrector {
  public:
   explicit CameraPoseCorrector(const CameraPoseCorrectionConfig& config = {}) : config_(config) {}
@@ -123,6 +127,8 @@ class CameraPoseCorrector {
     std::vector<Observation> observations;
     std::vector<ArcObservation> arcs;
     std::vector<MapTiltObservation> map;  ///< none or one
+    double map_range_m = 0.0;             ///< map points matched out to here (mapRange)
+    long line_residuals = 0;              ///< the first ones: segments and arcs, not the map
     /// Whitened residuals r (NaN: unusable) and their Jacobian at correction `at`; gates in
     /// sigmas. The solver uses r + J (c - at).
     Eigen::Vector2d at = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
@@ -138,6 +144,9 @@ class CameraPoseCorrector {
   /// Appends the raw residuals (m, NaN when unusable) of one arc's points to its fixed-radius
   /// circle under `pose`.
   void arcResiduals(const ArcObservation& arc, const Pose3& pose, std::vector<double>* out) const;
+  /// How far out a frame's points can be matched to the map with the tilt as well known as the
+  /// lines and arcs alone make it (line_sigma_), m.
+  double mapRange(const Frame& frame) const;
   void linearize(Frame* frame, const Eigen::Vector2d& c) const;
   /// IRLS Gauss-Newton on the linearised frames from estimate_; false on a numerical breakdown.
   bool solve();
@@ -153,6 +162,8 @@ class CameraPoseCorrector {
   Eigen::Vector2d estimate_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d applied_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d sigma_ = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  /// The estimate's sigma from the lines and arcs alone (the map residuals left out).
+  Eigen::Vector2d line_sigma_ = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
 };
 
 }  // namespace houghloc

@@ -60,13 +60,15 @@ Pose2 MapTiltObservation::fitPose(const std::vector<Eigen::Vector2d>& points, co
   return pose;
 }
 
-void MapTiltObservation::match(const FieldModel& field, const std::vector<Eigen::Vector2d>& points,
-                               const Pose2& field_T_robot, double radius_m) {
+int MapTiltObservation::match(const FieldModel& field, const std::vector<Eigen::Vector2d>& points,
+                              const Pose2& field_T_robot, double radius_m, double max_range_m) {
   inliers_ = 0;
+  int tried = 0;
   for (size_t i = 0; i < points.size(); ++i) {
     Match& m = matches_[i];
     m.valid = false;
-    if (!points[i].allFinite()) continue;
+    if (!points[i].allFinite() || !(points[i].norm() <= max_range_m)) continue;
+    ++tried;
     const NearestFeature nearest = nearestFeature(field, field_T_robot.transform(points[i]));
     // The true distance gates (a point beyond a line's end is no point of it); the fit uses the
     // distance along the normal, smooth in the pose.
@@ -86,20 +88,21 @@ void MapTiltObservation::match(const FieldModel& field, const std::vector<Eigen:
     m.valid = true;
     ++inliers_;
   }
+  return tried;
 }
 
 int MapTiltObservation::associate(const FieldModel& field, const Pose3& robot_T_camera,
-                                  const MapTiltConfig& config) {
+                                  const MapTiltConfig& config, double max_range_m) {
   const std::vector<Eigen::Vector2d> points = project(robot_T_camera);
-  match(field, points, guess_, config.search_radius_m);
+  match(field, points, guess_, config.search_radius_m, max_range_m);
   fitted_ = fitPose(points, guess_, config.pose_fit_iterations);
-  match(field, points, fitted_, config.gate_m);
+  const int tried = match(field, points, fitted_, config.gate_m, max_range_m);
   fitted_ = fitPose(points, fitted_, config.pose_fit_iterations);
   const Pose2 moved = guess_.inverse() * fitted_;
   const bool near_guess = moved.translation().norm() <= config.max_pose_shift_m &&
                           std::abs(moved.theta) <= config.max_pose_turn_rad;
   if (!near_guess || inliers_ < config.min_inliers ||
-      inliers_ < config.min_inlier_share * static_cast<double>(rays_.size())) {
+      inliers_ < config.min_inlier_share * static_cast<double>(tried)) {
     for (Match& m : matches_) m.valid = false;
     inliers_ = 0;
   }

@@ -41,10 +41,12 @@ class MapTiltObservation {
   MapTiltObservation(std::vector<Eigen::Vector3d> rays_camera, std::vector<double> sigma_m,
                      const Pose2& field_T_robot_guess);
 
-  /// Matches every point, projected with robot_T_camera, to its nearest map line (segments and
-  /// arcs; marks are too small to carry a direction) twice, refitting the frame's field pose in
-  /// between; returns the number of inliers. The matches stay fixed until the next call.
-  int associate(const FieldModel& field, const Pose3& robot_T_camera, const MapTiltConfig& config);
+  /// Matches every point within max_range_m, projected with robot_T_camera, to its nearest map
+  /// line (segments and arcs; marks are too small to carry a direction) twice, refitting the
+  /// frame's field pose in between; returns the number of inliers (0 when the frame fails a
+  /// gate). The matches stay fixed until the next call.
+  int associate(const FieldModel& field, const Pose3& robot_T_camera, const MapTiltConfig& config,
+                double max_range_m);
 
   /// Whitened distances (residual / sigma) of the matched points to their lines after fitting
   /// the frame's field pose to them, with the points projected by robot_T_camera; NaN for
@@ -66,8 +68,9 @@ class MapTiltObservation {
   /// The field pose that best fits `points` to their matches, from `start`.
   Pose2 fitPose(const std::vector<Eigen::Vector2d>& points, const Pose2& start,
                 int iterations) const;
-  void match(const FieldModel& field, const std::vector<Eigen::Vector2d>& points,
-             const Pose2& field_T_robot, double radius_m);
+  /// Matches the points within max_range_m; returns how many were tried.
+  int match(const FieldModel& field, const std::vector<Eigen::Vector2d>& points,
+            const Pose2& field_T_robot, double radius_m, double max_range_m);
 
   std::vector<Eigen::Vector3d> rays_;
   std::vector<double> sigma_;

@@ -186,7 +186,16 @@ TEST(CameraPoseCorrector, IgnoresAFieldPoseThatDoesNotFitTheLines) {
   CameraPoseCorrector corrector(enabledConfig());
   corrector.setFieldModel(std::make_shared<const FieldModel>(field));
   std::mt19937 rng(10);
+  // Points are matched only as far out as the lines alone pin the tilt down: no lines, no map.
   const Pose2 field_T_robot(-2.5, 0.5, 3.0);
+  {
+    const std::vector<SpotRay> rays = mapSpotRays(field, field_T_robot, true_pose, &rng);
+    corrector.update({}, {}, true_pose, {&rays, field_T_robot});
+    EXPECT_EQ(corrector.lastMapInliers(), 0);
+  }
+  for (int frame = 0; frame < 10; ++frame) {
+    corrector.update(gridSegments(true_pose, 0.1 * frame, &rng), true_pose);
+  }
   const std::vector<SpotRay> rays = mapSpotRays(field, field_T_robot, true_pose, &rng);
   ASSERT_GT(rays.size(), 40u);
   corrector.update({}, {}, true_pose, {&rays, field_T_robot});

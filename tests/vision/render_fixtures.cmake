@@ -19,7 +19,10 @@ set(fixtures
 include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/RenderFixtureList.cmake)
 render_fixture_list(40 ${fixtures})
 # The pitch/roll corrector over 10 s of walking (the 40-frame walks above are mostly its first
-# second): the robots walk of seed 101 and the plain walk of seed 107.
+# second): the robots walk of seed 101, the plain walk of seed 107, and walks on the msl and
+# spl2019 fields (their random-pose fixtures give the localizer no track to feed back).
 render_fixture_list(300
   "spl_nao-top_walk_robots_300|${W} --standard spl --camera nao-top --seed 101"
-  "spl_nao-top_walk_300|--standard spl --camera nao-top --trajectory walk --seed 107")
+  "spl_nao-top_walk_300|--standard spl --camera nao-top --trajectory walk --seed 107"
+  "msl_adult_walk_robots_300|${W} --standard msl --camera adult --seed 108"
+  "spl2019_nao-top_walk_robots_300|${W} --standard spl2019 --camera nao-top --seed 109")

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <Eigen/Core>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -15,10 +17,17 @@ struct RunStats {
   int global_runs = 0;  ///< frames on which the global localizer ran
   std::map<std::string, int> status_counts;
   double wall_s = 0.0;  ///< whole run, including output
+  // The pitch/roll corrector after the last processed frame (rad; sigma infinite before any
+  // estimate) and the frames whose points it matched to the map at the localizer's track.
+  Eigen::Vector2d correction = Eigen::Vector2d::Zero();
+  Eigen::Vector2d estimate = Eigen::Vector2d::Zero();
+  Eigen::Vector2d sigma = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  int map_matched_frames = 0;
 };
 
 /// The summary table on stdout: frames processed/skipped, mean and p95 time per frame for image
-/// loading, vision, localization (of which global) and the sum, frames per second, status counts.
+/// loading, vision, localization (of which global) and the sum, frames per second, status counts,
+/// the camera pitch/roll correction.
 void printRunSummary(const std::string& title, const RunStats& stats, int threads);
 
 /// p-quantile (0..1) of `values` by nearest rank; 0 for none.
