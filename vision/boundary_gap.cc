@@ -19,6 +19,7 @@ std::vector<SpotRay> dropSpotsNearBoundary(const std::vector<SpotRay>& rays,
   GroundProjectionConfig unlimited;
   unlimited.max_range_m = 1e9;
   unlimited.min_depression_rad = 0.0;
+  const GroundProjector projector(camera.pose());
   std::vector<SpotRay> kept;
   kept.reserve(rays.size());
   for (const SpotRay& ray : rays) {
@@ -33,8 +34,8 @@ std::vector<SpotRay> dropSpotsNearBoundary(const std::vector<SpotRay>& rays,
       cached = row > static_cast<float>(std::max(start, 0)) + 1.0f ? camera.pixelToGround(c, row)
                                                                    : std::nullopt;
     }
-    const auto spot = *cached ? rayToGround(ray.ray_camera, camera.pose(), unlimited)
-                              : std::optional<Eigen::Vector2d>{};
+    const auto spot =
+        *cached ? projector.project(ray.ray_camera, unlimited) : std::optional<Eigen::Vector2d>{};
     if (spot && (*spot - **cached).norm() < min_gap_m) {
       if (dropped) ++*dropped;
       continue;

@@ -53,8 +53,9 @@ void CameraPoseCorrector::arcResiduals(const ArcObservation& arc, const Pose3& p
   unlimited.max_range_m = 1e9;
   unlimited.min_depression_rad = 0.0;
   std::vector<Eigen::Vector2d> points;
+  const GroundProjector projector(pose);
   for (const Eigen::Vector3d& ray : arc.rays) {
-    if (const auto p = rayToGround(ray, pose, unlimited)) points.push_back(*p);
+    if (const auto p = projector.project(ray, unlimited)) points.push_back(*p);
   }
   Eigen::Vector2d center;
   const bool ok = points.size() == arc.rays.size() &&
@@ -71,11 +72,12 @@ void CameraPoseCorrector::frameResiduals(const Frame& frame, const Eigen::Vector
   unlimited.max_range_m = 1e9;
   unlimited.min_depression_rad = 0.0;
   const Pose3 pose = withCorrection(frame.recorded, c);
+  const GroundProjector projector(pose);
   std::vector<double> angles;
   double cos_sum = 0.0, sin_sum = 0.0;
   for (const Observation& o : frame.observations) {
-    const auto a = rayToGround(o.ray_a, pose, unlimited);
-    const auto b = rayToGround(o.ray_b, pose, unlimited);
+    const auto a = projector.project(o.ray_a, unlimited);
+    const auto b = projector.project(o.ray_b, unlimited);
     const double angle = a && b ? std::atan2(b->y() - a->y(), b->x() - a->x()) : std::nan("");
     angles.push_back(angle);
     if (!std::isfinite(angle)) continue;
@@ -221,9 +223,10 @@ std::optional<MapTiltObservation> CameraPoseCorrector::mapObservation(
   GroundProjectionConfig in_range;
   in_range.max_range_m = config_.map.max_range_m;
   in_range.min_depression_rad = 0.0;
+  const GroundProjector projector(corrected(recorded));
   std::vector<const SpotRay*> near;
   for (const SpotRay& ray : *input.rays) {
-    if (rayToGround(ray.ray_camera, corrected(recorded), in_range)) near.push_back(&ray);
+    if (projector.project(ray.ray_camera, in_range)) near.push_back(&ray);
   }
   const size_t wanted = static_cast<size_t>(std::max(1, config_.map.max_points_per_frame));
   if (near.size() < static_cast<size_t>(config_.map.min_inliers)) return std::nullopt;
@@ -232,7 +235,7 @@ std::optional<MapTiltObservation> CameraPoseCorrector::mapObservation(
   const double stride = std::max(1.0, static_cast<double>(near.size()) / wanted);
   for (double k = 0.0; k < static_cast<double>(near.size()); k += stride) {
     const SpotRay& ray = *near[static_cast<size_t>(k)];
-    const auto p = rayToGround(ray.ray_camera, corrected(recorded), in_range);
+    const auto p = projector.project(ray.ray_camera, in_range);
     const double range_2m = 0.5 * p->norm();
     rays.push_back(ray.ray_camera);
     sigmas.push_back(config_.min_point_sigma_m * (1.0 + range_2m * range_2m));

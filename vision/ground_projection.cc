@@ -19,17 +19,22 @@ std::vector<SpotRay> spotRays(const CameraModel& camera, const std::vector<LineS
   return rays;
 }
 
+std::optional<Eigen::Vector2d> GroundProjector::project(
+    const Eigen::Vector3d& ray_camera, const GroundProjectionConfig& config) const {
+  const Eigen::Vector3d ray = robot_R_camera_ * ray_camera;
+  const double norm = ray.norm();
+  if (origin_.z() <= 0.0 || !(norm > 0.0)) return std::nullopt;
+  if (-ray.z() / norm < std::sin(config.min_depression_rad)) return std::nullopt;
+  const double s = origin_.z() / -ray.z();
+  const Eigen::Vector2d p(origin_.x() + s * ray.x(), origin_.y() + s * ray.y());
+  if (p.norm() > config.max_range_m) return std::nullopt;
+  return p;
+}
+
 std::optional<Eigen::Vector2d> rayToGround(const Eigen::Vector3d& ray_camera,
                                            const Pose3& robot_T_camera,
                                            const GroundProjectionConfig& config) {
-  const Eigen::Vector3d ray = robot_T_camera.rotation() * ray_camera;
-  const double norm = ray.norm();
-  if (robot_T_camera.z <= 0.0 || !(norm > 0.0)) return std::nullopt;
-  if (-ray.z() / norm < std::sin(config.min_depression_rad)) return std::nullopt;
-  const double s = robot_T_camera.z / -ray.z();
-  const Eigen::Vector2d p(robot_T_camera.x + s * ray.x(), robot_T_camera.y + s * ray.y());
-  if (p.norm() > config.max_range_m) return std::nullopt;
-  return p;
+  return GroundProjector(robot_T_camera).project(ray_camera, config);
 }
 
 std::vector<GroundPoint> projectSpots(const std::vector<SpotRay>& rays, const Pose3& robot_T_camera,
@@ -39,8 +44,9 @@ std::vector<GroundPoint> projectSpots(const std::vector<SpotRay>& rays, const Po
   points.reserve(rays.size());
   std::unordered_set<std::int64_t> cells;
   const double cell = std::max(1e-3, config.thin_cell_m);
+  const GroundProjector projector(robot_T_camera);
   for (const SpotRay& ray : rays) {
-    const auto p = rayToGround(ray.ray_camera, robot_T_camera, config);
+    const auto p = projector.project(ray.ray_camera, config);
     if (!p) {
       if (stats) ++stats->dropped_range;
       continue;

@@ -38,8 +38,24 @@ struct SpotRay {
 
 std::vector<SpotRay> spotRays(const CameraModel& camera, const std::vector<LineSpot>& spots);
 
-/// Intersection of a camera-frame ray with the ground z = 0 for robot_T_camera; none above the
-/// horizon, at grazing angles or beyond the range limit.
+/// Intersects camera-frame rays with the ground z = 0 for one camera pose. Holds the pose's
+/// rotation (Pose3::rotation() costs six sin/cos), for loops over many rays.
+class GroundProjector {
+ public:
+  explicit GroundProjector(const Pose3& robot_T_camera)
+      : robot_R_camera_(robot_T_camera.rotation()), origin_(robot_T_camera.translation()) {}
+
+  /// The ground point (robot frame) the ray hits; none above the horizon, at grazing angles or
+  /// beyond the range limit.
+  std::optional<Eigen::Vector2d> project(const Eigen::Vector3d& ray_camera,
+                                         const GroundProjectionConfig& config) const;
+
+ private:
+  Eigen::Matrix3d robot_R_camera_;
+  Eigen::Vector3d origin_;
+};
+
+/// GroundProjector(robot_T_camera).project(ray_camera, config), for a single ray.
 std::optional<Eigen::Vector2d> rayToGround(const Eigen::Vector3d& ray_camera,
                                            const Pose3& robot_T_camera,
                                            const GroundProjectionConfig& config);

@@ -146,6 +146,7 @@ LineFeatures fitLineFeatures(const std::vector<SpotRay>& rays, const Pose3& robo
   if (!config.enabled) return features;
   const CameraFrame camera{robot_T_camera.rotation().transpose(),
                            {robot_T_camera.x, robot_T_camera.y, robot_T_camera.z}};
+  const GroundProjector projector(robot_T_camera);
   for (const bool vertical : {true, false}) {
     std::vector<const SpotRay*> spots;
     for (const SpotRay& ray : rays) {
@@ -154,7 +155,7 @@ LineFeatures fitLineFeatures(const std::vector<SpotRay>& rays, const Pose3& robo
     for (const auto& chain : linkChains(spots, vertical, config)) {
       std::vector<ChainPoint> points;
       for (const SpotRay* ray : chain) {
-        if (const auto p = rayToGround(ray->ray_camera, robot_T_camera, projection)) {
+        if (const auto p = projector.project(ray->ray_camera, projection)) {
           points.push_back({*p, ray});
         }
       }

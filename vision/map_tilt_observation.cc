@@ -25,8 +25,9 @@ std::vector<Eigen::Vector2d> MapTiltObservation::project(const Pose3& robot_T_ca
   unlimited.min_depression_rad = 0.0;
   std::vector<Eigen::Vector2d> points;
   points.reserve(rays_.size());
+  const GroundProjector projector(robot_T_camera);
   for (const Eigen::Vector3d& ray : rays_) {
-    const auto p = rayToGround(ray, robot_T_camera, unlimited);
+    const auto p = projector.project(ray, unlimited);
     points.push_back(p ? *p : Eigen::Vector2d::Constant(std::nan("")));
   }
   return points;
