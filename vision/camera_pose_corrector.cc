@@ -142,6 +142,32 @@ void CameraPoseCorrector::linearize(Frame* frame, const Eigen::Vector2d& c) cons
     frame->jacobian.col(k) = (Eigen::Map<const Eigen::VectorXd>(r1.data(), n) - frame->r) / kStep;
   }
   frame->at = c;
+  cacheQuadratic(frame);
+}
+
+void CameraPoseCorrector::cacheQuadratic(Frame* frame) const {
+  frame->quadratic = true;
+  frame->jtj.setZero();
+  frame->line_jtj.setZero();
+  frame->jtr.setZero();
+  frame->rtr = 0.0;
+  frame->used = 0;
+  for (long i = 0; i < frame->r.size(); ++i) {
+    const Eigen::RowVector2d j = frame->jacobian.row(i);
+    const double r = frame->r(i);
+    if (!std::isfinite(r) || !j.allFinite()) continue;                  // unusable at every c
+    const double reach = config_.relinearize_rad * j.cwiseAbs().sum();  // >= |j (c - at)|
+    if (std::abs(r) - reach > frame->gate(i)) continue;  // outside its gate at every c
+    if (!(std::abs(r) + reach < std::min(frame->gate(i), config_.huber_sigmas))) {
+      frame->quadratic = false;  // may cross a gate or the Huber threshold: per residual
+      return;
+    }
+    frame->jtj += j.transpose() * j;
+    if (i < frame->line_residuals) frame->line_jtj += j.transpose() * j;
+    frame->jtr += j.transpose() * r;
+    frame->rtr += r * r;
+    ++frame->used;
+  }
 }
 
 bool CameraPoseCorrector::solve() {
@@ -171,6 +197,15 @@ bool CameraPoseCorrector::solve() {
       residual_count = 0;
       for (const Frame& frame : frames_) {
         const Eigen::Vector2d dc = c - frame.at;
+        if (frame.quadratic && dc.cwiseAbs().maxCoeff() <= config_.relinearize_rad) {
+          // Sum of (r + J dc)^2 with unit weights, from the kept sums.
+          information += frame.jtj;
+          line_information += frame.line_jtj;
+          g += frame.jtr + frame.jtj * dc;
+          chi2 += frame.rtr + 2.0 * dc.dot(frame.jtr) + dc.dot(frame.jtj * dc);
+          residual_count += frame.used;
+          continue;
+        }
         for (long i = 0; i < frame.r.size(); ++i) {
           const Eigen::RowVector2d j = frame.jacobian.row(i);
           const double r = frame.r(i) + j.dot(dc);

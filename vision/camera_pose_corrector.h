@@ -134,6 +134,14 @@ class CameraPoseCorrector {
     Eigen::Vector2d at = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
     Eigen::VectorXd r, gate;
     Eigen::Matrix<double, Eigen::Dynamic, 2> jacobian;
+    /// When every residual stays unusable, or inside both its gate and the Huber threshold,
+    /// for any c within relinearize_rad of `at`, the frame's part of the normal equations is
+    /// the same quadratic there: sums kept once instead of a loop over residuals per iteration.
+    bool quadratic = false;
+    Eigen::Matrix2d jtj = Eigen::Matrix2d::Zero(), line_jtj = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d jtr = Eigen::Vector2d::Zero();
+    double rtr = 0.0;
+    long used = 0;
   };
 
   double directionSigma(const GroundSegment& segment) const;
@@ -148,6 +156,8 @@ class CameraPoseCorrector {
   /// lines and arcs alone make it (line_sigma_), m.
   double mapRange(const Frame& frame) const;
   void linearize(Frame* frame, const Eigen::Vector2d& c) const;
+  /// Sets the frame's kept sums (Frame::quadratic) after linearize().
+  void cacheQuadratic(Frame* frame) const;
   /// IRLS Gauss-Newton on the linearised frames from estimate_; false on a numerical breakdown.
   bool solve();
 
