@@ -16,9 +16,7 @@ std::vector<SpotRay> dropSpotsNearBoundary(const std::vector<SpotRay>& rays,
   constexpr int kBlock = 8;
   const int width = static_cast<int>(boundary.rows.size());
   std::vector<std::optional<std::optional<Eigen::Vector2d>>> edge((width + kBlock - 1) / kBlock);
-  GroundProjectionConfig unlimited;
-  unlimited.max_range_m = 1e9;
-  unlimited.min_depression_rad = 0.0;
+  const GroundProjectionConfig unlimited = unlimitedProjection();
   const GroundProjector projector(camera.pose());
   std::vector<SpotRay> kept;
   kept.reserve(rays.size());

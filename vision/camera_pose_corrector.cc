@@ -24,11 +24,14 @@ double wrapQuarter(double angle) {
 
 }  // namespace
 
+double CameraPoseCorrector::pointSigma(double range_m) const {
+  const double range_2m = 0.5 * range_m;
+  return config_.min_point_sigma_m * (1.0 + range_2m * range_2m);
+}
+
 double CameraPoseCorrector::directionSigma(const GroundSegment& segment) const {
   // Least-squares line through n points spread over length L: sigma_angle ~ sigma sqrt(12 / n) / L.
-  // The point noise floor grows with range like a pixel's footprint on the ground.
-  const double range_2m = 0.25 * (segment.a + segment.b).norm();  // midpoint, in units of 2 m
-  const double floor = config_.min_point_sigma_m * (1.0 + range_2m * range_2m);
+  const double floor = pointSigma(0.5 * (segment.a + segment.b).norm());  // at the midpoint
   const double sigma = std::max(segment.rms_m, floor);
   return sigma * std::sqrt(12.0 / std::max(2, segment.num_points)) /
          std::max(0.1, segment.length());
@@ -49,9 +52,7 @@ void CameraPoseCorrector::reset() {
 
 void CameraPoseCorrector::arcResiduals(const ArcObservation& arc, const Pose3& pose,
                                        std::vector<double>* out) const {
-  GroundProjectionConfig unlimited;
-  unlimited.max_range_m = 1e9;
-  unlimited.min_depression_rad = 0.0;
+  const GroundProjectionConfig unlimited = unlimitedProjection();
   std::vector<Eigen::Vector2d> points;
   const GroundProjector projector(pose);
   for (const Eigen::Vector3d& ray : arc.rays) {
@@ -68,9 +69,7 @@ void CameraPoseCorrector::arcResiduals(const ArcObservation& arc, const Pose3& p
 void CameraPoseCorrector::frameResiduals(const Frame& frame, const Eigen::Vector2d& c,
                                          std::vector<double>* out,
                                          std::vector<double>* gates) const {
-  GroundProjectionConfig unlimited;
-  unlimited.max_range_m = 1e9;
-  unlimited.min_depression_rad = 0.0;
+  const GroundProjectionConfig unlimited = unlimitedProjection();
   const Pose3 pose = withCorrection(frame.recorded, c);
   const GroundProjector projector(pose);
   std::vector<double> angles;
@@ -251,17 +250,15 @@ bool CameraPoseCorrector::solve() {
 std::optional<MapTiltObservation> CameraPoseCorrector::mapObservation(
     const CorrectorMapInput& input, const Pose3& recorded) const {
   if (!config_.map.enabled || !field_ || !input.rays || !input.field_T_robot) return std::nullopt;
-  const Pose2& guess = *input.field_T_robot;
-  if (!std::isfinite(guess.x) || !std::isfinite(guess.y) || !std::isfinite(guess.theta)) {
-    return std::nullopt;
-  }
+  if (!input.field_T_robot->isFinite()) return std::nullopt;
   GroundProjectionConfig in_range;
   in_range.max_range_m = config_.map.max_range_m;
   in_range.min_depression_rad = 0.0;
   const GroundProjector projector(corrected(recorded));
-  std::vector<const SpotRay*> near;
+  std::vector<std::pair<const SpotRay*, double>> near;  // with its range, m
   for (const SpotRay& ray : *input.rays) {
-    if (projector.project(ray.ray_camera, in_range)) near.push_back(&ray);
+    if (const auto p = projector.project(ray.ray_camera, in_range))
+      near.push_back({&ray, p->norm()});
   }
   const size_t wanted = static_cast<size_t>(std::max(1, config_.map.max_points_per_frame));
   if (near.size() < static_cast<size_t>(config_.map.min_inliers)) return std::nullopt;
@@ -269,11 +266,9 @@ std::optional<MapTiltObservation> CameraPoseCorrector::mapObservation(
   std::vector<double> sigmas;
   const double stride = std::max(1.0, static_cast<double>(near.size()) / wanted);
   for (double k = 0.0; k < static_cast<double>(near.size()); k += stride) {
-    const SpotRay& ray = *near[static_cast<size_t>(k)];
-    const auto p = projector.project(ray.ray_camera, in_range);
-    const double range_2m = 0.5 * p->norm();
-    rays.push_back(ray.ray_camera);
-    sigmas.push_back(config_.min_point_sigma_m * (1.0 + range_2m * range_2m));
+    const auto& [ray, range_m] = near[static_cast<size_t>(k)];
+    rays.push_back(ray->ray_camera);
+    sigmas.push_back(pointSigma(range_m));
   }
   return MapTiltObservation(std::move(rays), std::move(sigmas), *input.field_T_robot);
 }
@@ -305,9 +300,7 @@ bool CameraPoseCorrector::update(const std::vector<GroundSegment>& segments,
   if (config_.use_circles && config_.circle_radius_m > 0.0) {
     for (const CircleCandidate& circle : circles) {
       if (circle.rays_camera.size() < 8) continue;
-      const double range_2m = 0.5 * circle.center.norm();
-      frame.arcs.push_back(
-          {circle.rays_camera, config_.min_point_sigma_m * (1.0 + range_2m * range_2m)});
+      frame.arcs.push_back({circle.rays_camera, pointSigma(circle.center.norm())});
     }
   }
   if (auto map = mapObservation(map_input, recorded)) frame.map.push_back(std::move(*map));

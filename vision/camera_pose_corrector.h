@@ -144,6 +144,9 @@ class CameraPoseCorrector {
     long used = 0;
   };
 
+  /// Ground noise of a line point at range_m: the floor min_point_sigma_m grows as
+  /// (1 + (range / 2 m)^2), like a pixel's footprint on the ground.
+  double pointSigma(double range_m) const;
   double directionSigma(const GroundSegment& segment) const;
   /// Whitened residuals of one frame's observations for correction c (NaN when unusable) and,
   /// when given, each one's gate in sigmas.

@@ -19,6 +19,13 @@ std::vector<SpotRay> spotRays(const CameraModel& camera, const std::vector<LineS
   return rays;
 }
 
+GroundProjectionConfig unlimitedProjection() {
+  GroundProjectionConfig config;
+  config.max_range_m = 1e9;
+  config.min_depression_rad = 0.0;
+  return config;
+}
+
 std::optional<Eigen::Vector2d> GroundProjector::project(
     const Eigen::Vector3d& ray_camera, const GroundProjectionConfig& config) const {
   const Eigen::Vector3d ray = robot_R_camera_ * ray_camera;

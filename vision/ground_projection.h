@@ -38,6 +38,10 @@ struct SpotRay {
 
 std::vector<SpotRay> spotRays(const CameraModel& camera, const std::vector<LineSpot>& spots);
 
+/// No range limit and no grazing-angle limit: for geometry on rays already accepted (segments,
+/// arcs, the boundary), where only where they hit the ground matters.
+GroundProjectionConfig unlimitedProjection();
+
 /// Intersects camera-frame rays with the ground z = 0 for one camera pose. Holds the pose's
 /// rotation (Pose3::rotation() costs six sin/cos), for loops over many rays.
 class GroundProjector {

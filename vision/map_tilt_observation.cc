@@ -20,9 +20,7 @@ MapTiltObservation::MapTiltObservation(std::vector<Eigen::Vector3d> rays_camera,
       matches_(rays_.size()) {}
 
 std::vector<Eigen::Vector2d> MapTiltObservation::project(const Pose3& robot_T_camera) const {
-  GroundProjectionConfig unlimited;
-  unlimited.max_range_m = 1e9;
-  unlimited.min_depression_rad = 0.0;
+  const GroundProjectionConfig unlimited = unlimitedProjection();
   std::vector<Eigen::Vector2d> points;
   points.reserve(rays_.size());
   const GroundProjector projector(robot_T_camera);

@@ -1,16 +1,8 @@
 #include "tools/offline/field_pose_feedback.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace houghloc {
-namespace {
-
-bool isFinite(const std::optional<Pose2>& pose) {
-  return pose && std::isfinite(pose->x) && std::isfinite(pose->y) && std::isfinite(pose->theta);
-}
-
-}  // namespace
 
 FieldPoseFeedback::FieldPoseFeedback(int first_frame, int lag_frames)
     : first_frame_(first_frame),
@@ -51,7 +43,7 @@ std::optional<Pose2> FieldPoseFeedback::guessFor(int index, const std::optional<
   if (aborted_ || it == published_.end()) return std::nullopt;
   const Published& then = it->second;
   // Odometry moved the robot by then^-1 * now since that frame, in the robot frame.
-  if (isFinite(then.odometry) && isFinite(odometry)) {
+  if (then.odometry && then.odometry->isFinite() && odometry && odometry->isFinite()) {
     return then.field_T_robot * (then.odometry->inverse() * *odometry);
   }
   return then.field_T_robot;
