@@ -9,7 +9,7 @@ namespace houghloc {
 std::vector<SpotRay> dropSpotsNearBoundary(const std::vector<SpotRay>& rays,
                                            const CameraModel& camera, const FieldBoundary& boundary,
                                            const std::vector<int>& start_rows, double min_gap_m,
-                                           int* dropped) {
+                                           double min_boundary_range_m, int* dropped) {
   if (dropped) *dropped = 0;
   if (min_gap_m <= 0.0 || !boundary.found || boundary.rows.empty()) return rays;
   // The boundary's ground point per block of columns, computed on demand (one undistortion).
@@ -28,9 +28,10 @@ std::vector<SpotRay> dropSpotsNearBoundary(const std::vector<SpotRay>& rays,
       const float row = boundary.rowAt(c);
       const int start =
           c < static_cast<int>(start_rows.size()) ? start_rows[static_cast<size_t>(c)] : 0;
-      // A boundary at the start row is no seen end of the field.
+      // A boundary at the start row is no seen end of the field, nor is a near one.
       cached = row > static_cast<float>(std::max(start, 0)) + 1.0f ? camera.pixelToGround(c, row)
                                                                    : std::nullopt;
+      if (*cached && (*cached)->norm() < min_boundary_range_m) *cached = std::nullopt;
     }
     const auto spot =
         *cached ? projector.project(ray.ray_camera, unlimited) : std::optional<Eigen::Vector2d>{};

@@ -25,6 +25,8 @@ struct GroundProjectionConfig {
                                      ///< point in their column are dropped (boundary_gap.h): the
                                      ///< goal frame's back bar lies 0.2-0.4 m from the carpet's
                                      ///< end, the outer lines 0.7-1 m
+  double min_boundary_gap_range_m = 1.2;  ///< ... when that boundary point is at least this far
+                                          ///< (nearer: an object on the field, boundary_gap.h)
 };
 
 /// A spot's viewing ray in the camera body frame. Computed once (undistortion is the expensive

@@ -80,7 +80,8 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   // then applies to this frame's projection already. The corrector sees all spots: the goal
   // frame's bars dropped below are parallel or perpendicular to the lines anyway, and with a
   // wrong tilt the boundary gap would be measured wrongly.
-  const std::vector<SpotRay> all_rays = spotRays(camera_, result.spots);
+  const std::vector<SpotRay> all_rays = dropSpotsOnOwnBody(
+      spotRays(camera_, result.spots), pose, config_.own_body, &diag.dropped_on_own_body);
   diag.time_project_ms = msSince(&step);
   result.features = fitLineFeatures(all_rays, pose, config_.projection, config_.segments);
   diag.pose_correction_updated =
@@ -96,9 +97,9 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
       result.horizon_rows = camera_.horizonRows();
     }
   }
-  const std::vector<SpotRay> rays =
-      dropSpotsNearBoundary(all_rays, camera_, result.boundary, start_rows,
-                            config_.projection.min_boundary_gap_m, &diag.dropped_near_boundary);
+  const std::vector<SpotRay> rays = dropSpotsNearBoundary(
+      all_rays, camera_, result.boundary, start_rows, config_.projection.min_boundary_gap_m,
+      config_.projection.min_boundary_gap_range_m, &diag.dropped_near_boundary);
   if (diag.dropped_near_boundary > 0 || !samePose(refined, pose)) {
     result.features = fitLineFeatures(rays, refined, config_.projection, config_.segments);
   }

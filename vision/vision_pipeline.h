@@ -19,6 +19,7 @@
 #include "vision/line_segments.h"
 #include "vision/line_spots.h"
 #include "vision/line_width_model.h"
+#include "vision/own_body.h"
 #include "vision/scan_grid.h"
 
 namespace houghloc {
@@ -33,6 +34,7 @@ struct VisionConfig {
   ScanGridConfig scan_grid;
   LineSpotConfig spots;
   GroundProjectionConfig projection;
+  OwnBodyConfig own_body;
   FieldEdgeSamplingConfig field_edge;
   LineSegmentConfig segments;
   CameraPoseCorrectionConfig pose_correction;
@@ -45,6 +47,7 @@ struct VisionDiagnostics {
   ProjectionStats projection_stats;
   int num_spots = 0;
   int dropped_near_boundary = 0;  ///< spots within min_boundary_gap_m of the field boundary
+  int dropped_on_own_body = 0;    ///< spots on the robot's own feet (OwnBodyConfig)
   bool pose_correction_updated = false;
   Eigen::Vector2d pose_correction_rad = Eigen::Vector2d::Zero();  ///< (roll, pitch) applied
   /// The corrector's estimate before its significance gate, and its standard deviation (rad;

@@ -4,6 +4,7 @@
 
 #include "vision/camera_presets.h"
 #include "vision/circle_fit.h"
+#include "vision/own_body.h"
 
 namespace houghloc {
 namespace {
@@ -41,13 +42,35 @@ TEST(BoundaryGap, DropsSpotsJustBelowTheFieldsEndOnly) {
                                      rayTo(camera, {2.8, 0.3}),    // a line 0.7 m before it
                                      rayTo(camera, {1.5, -0.2})};  // near
   int dropped = 0;
-  const auto kept = dropSpotsNearBoundary(rays, camera, boundary, start_rows, 0.45, &dropped);
+  const auto kept = dropSpotsNearBoundary(rays, camera, boundary, start_rows, 0.45, 1.2, &dropped);
   EXPECT_EQ(dropped, 1);
   ASSERT_EQ(kept.size(), 2u);
   EXPECT_EQ(kept[0].pixel, rays[1].pixel);
+  // A boundary nearer than 1.2 m is mostly an object on the field: then nothing is dropped.
+  EXPECT_EQ(dropSpotsNearBoundary(rays, camera, boundary, start_rows, 0.45, 3.6).size(), 3u);
+  EXPECT_EQ(dropSpotsNearBoundary(rays, camera, boundary, start_rows, 0.45, 3.4).size(), 2u);
   // A boundary at the scan start row (the field reaches the image top) is no end of the field.
   boundary.rows.assign(boundary.rows.size(), 0.f);
-  EXPECT_EQ(dropSpotsNearBoundary(rays, camera, boundary, start_rows, 0.45).size(), 3u);
+  EXPECT_EQ(dropSpotsNearBoundary(rays, camera, boundary, start_rows, 0.45, 1.2).size(), 3u);
+}
+
+TEST(OwnBody, DropsSpotsOnTheFeetOnly) {
+  const CameraPreset preset = cameraPreset("nao-bottom");
+  const CameraModel camera(preset.intrinsics, preset.robot_T_camera);
+  const std::vector<SpotRay> rays = {rayTo(camera, {0.13, 0.05}),  // a toe in a walking step
+                                     rayTo(camera, {0.05, -0.1}),  // the other foot's side
+                                     rayTo(camera, {0.16, 0.0}),   // a line just ahead
+                                     rayTo(camera, {0.1, 0.13})};  // a line beside the feet
+  int dropped = 0;
+  const auto kept = dropSpotsOnOwnBody(rays, camera.pose(), OwnBodyConfig{}, &dropped);
+  EXPECT_EQ(dropped, 2);
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_EQ(kept[0].pixel, rays[2].pixel);
+  EXPECT_EQ(kept[1].pixel, rays[3].pixel);
+  // A zero box keeps everything.
+  EXPECT_EQ(dropSpotsOnOwnBody(rays, camera.pose(), OwnBodyConfig{0.0, 0.0, 0.0}).size(), 4u);
+  EXPECT_FALSE(onOwnBody({0.15, 0.0}, OwnBodyConfig{}));
+  EXPECT_TRUE(onOwnBody({-0.09, 0.1}, OwnBodyConfig{}));
 }
 
 TEST(CircleFit, FindsTheCentreOfAShortNoisyArcOfKnownRadius) {

@@ -21,8 +21,11 @@ render_fixture_list(40 ${fixtures})
 # The pitch/roll corrector over 10 s of walking (the 40-frame walks above are mostly its first
 # second): the robots walk of seed 101, the plain walk of seed 107, and walks on the msl and
 # spl2019 fields (their random-pose fixtures give the localizer no track to feed back).
+# spl_nao_walk_robots_300: a NAO's two cameras taking turns, as on the robot; its bottom camera
+# sees the robot's own feet in a walking step.
 render_fixture_list(300
   "spl_nao-top_walk_robots_300|${W} --standard spl --camera nao-top --seed 101"
   "spl_nao-top_walk_300|--standard spl --camera nao-top --trajectory walk --seed 107"
   "msl_adult_walk_robots_300|${W} --standard msl --camera adult --seed 108"
-  "spl2019_nao-top_walk_robots_300|${W} --standard spl2019 --camera nao-top --seed 109")
+  "spl2019_nao-top_walk_robots_300|${W} --standard spl2019 --camera nao-top --seed 109"
+  "spl_nao_walk_robots_300|${W} --standard spl --camera nao --seed 110")

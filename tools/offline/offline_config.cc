@@ -1,7 +1,9 @@
 #include "tools/offline/offline_config.h"
 
 #include <filesystem>
+#include <fstream>
 #include <opencv2/core/persistence.hpp>
+#include <sstream>
 #include <stdexcept>
 
 #include "localization/localizer_config_io.h"
@@ -15,9 +17,17 @@ OfflineConfig loadOfflineConfig(const std::string& path) {
   if (!std::filesystem::exists(path)) {
     throw std::runtime_error(path + ": config file does not exist");
   }
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  std::string yaml = text.str();
+  // OpenCV's reader wants the "%YAML:1.0" line that --print-config writes; a hand-written file
+  // without it is accepted too.
+  if (yaml.rfind("%YAML", 0) != 0) yaml = "%YAML:1.0\n---\n" + yaml;
   cv::FileStorage storage;
   try {
-    storage.open(path, cv::FileStorage::READ);
+    storage.open(yaml,
+                 cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
   } catch (const cv::Exception& e) {
     throw std::runtime_error(path + ": not a valid YAML config: " + e.err);
   }
