@@ -61,6 +61,12 @@ struct CameraPoseCorrectionConfig {
                                         ///< own sub-millimetre biases
   MapTiltConfig map;                    ///< points matched to the map, in frames that come with
                                         ///< a field pose (the localizer's)
+  bool shared_between_cameras = false;  ///< the tools give a recording's cameras one corrector
+                                        ///< (VisionPipeline::sharePoseCorrection): right when
+                                        ///< their recorded poses share one roll/pitch error (a
+                                        ///< NAO's head pitch joint), wrong for separate mount
+                                        ///< errors; lets a NAO's bottom camera, whose own view
+                                        ///< never shows its tilt, use the top camera's lines
 };
 
 /// What one frame adds to the corrector besides its segments and arcs: the line spots' rays

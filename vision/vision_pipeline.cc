@@ -38,7 +38,7 @@ VisionPipeline::VisionPipeline(const CameraIntrinsics& intrinsics, const VisionC
     : config_(config),
       camera_id_(camera_id),
       camera_(intrinsics, Pose3{}),
-      corrector_(correctorConfig(config)) {}
+      corrector_(std::make_shared<CameraPoseCorrector>(correctorConfig(config))) {}
 
 VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_camera,
                                      std::int64_t t_us, const std::optional<Pose2>& field_T_robot) {
@@ -58,7 +58,7 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   const cv::Mat bgr = toBgr(image);
 
   // 1. Horizon from the (corrected) camera pose.
-  const Pose3 pose = corrector_.corrected(robot_T_camera);
+  const Pose3 pose = corrector_->corrected(robot_T_camera);
   if (!samePose(pose, camera_.pose())) camera_.setPose(pose);
   result.robot_T_camera_used = pose;
   result.horizon_rows = camera_.horizonRows();
@@ -85,9 +85,9 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   diag.time_project_ms = msSince(&step);
   result.features = fitLineFeatures(all_rays, pose, config_.projection, config_.segments);
   diag.pose_correction_updated =
-      corrector_.update(result.features.segments, result.features.circles, robot_T_camera,
-                        {&all_rays, field_T_robot});
-  const Pose3 refined = corrector_.corrected(robot_T_camera);
+      corrector_->update(result.features.segments, result.features.circles, robot_T_camera,
+                         {&all_rays, field_T_robot});
+  const Pose3 refined = corrector_->corrected(robot_T_camera);
   if (!samePose(refined, pose)) {
     result.robot_T_camera_used = refined;
     // The horizon and the visible region follow only noticeable changes (setPose recomputes
@@ -105,9 +105,9 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   }
   diag.pose_correction_rad = {refined.roll - robot_T_camera.roll,
                               refined.pitch - robot_T_camera.pitch};
-  diag.pose_correction_estimate_rad = corrector_.estimate();
-  diag.pose_correction_sigma_rad = corrector_.estimateSigma();
-  diag.pose_correction_map_inliers = corrector_.lastMapInliers();
+  diag.pose_correction_estimate_rad = corrector_->estimate();
+  diag.pose_correction_sigma_rad = corrector_->estimateSigma();
+  diag.pose_correction_map_inliers = corrector_->lastMapInliers();
   diag.time_features_ms = msSince(&step);
 
   result.ground.points = projectSpots(rays, result.robot_T_camera_used, camera_id_,

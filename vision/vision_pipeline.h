@@ -91,19 +91,26 @@ class VisionPipeline {
 
   /// The map the pitch/roll corrector matches points against in frames with a field pose.
   void setFieldModel(std::shared_ptr<const FieldModel> field) {
-    corrector_.setFieldModel(std::move(field));
+    corrector_->setFieldModel(std::move(field));
   }
+
+  /// From now on this pipeline and `other` estimate one pitch/roll correction together, from
+  /// both cameras' lines (each frame keeps its own recorded pose): for cameras whose recorded
+  /// poses are off by the same roll and pitch, e.g. a head joint offset on a NAO, whose bottom
+  /// camera alone sees too little to find its own (CameraPoseCorrectionConfig::
+  /// shared_between_cameras). This pipeline's estimate so far is dropped.
+  void sharePoseCorrection(const VisionPipeline& other) { corrector_ = other.corrector_; }
 
   const VisionConfig& config() const { return config_; }
   const CameraModel& camera() const { return camera_; }
-  const CameraPoseCorrector& poseCorrector() const { return corrector_; }
-  void resetPoseCorrection() { corrector_.reset(); }
+  const CameraPoseCorrector& poseCorrector() const { return *corrector_; }
+  void resetPoseCorrection() { corrector_->reset(); }
 
  private:
   VisionConfig config_;
   int camera_id_ = 0;
   CameraModel camera_;
-  CameraPoseCorrector corrector_;
+  std::shared_ptr<CameraPoseCorrector> corrector_;  ///< shared by sharePoseCorrection()
 };
 
 }  // namespace houghloc

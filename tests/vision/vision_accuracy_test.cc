@@ -43,14 +43,21 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-/// Runs the pipeline over a fixture folder; the pitch/roll corrector as in the default config
-/// unless `correct_pose` says otherwise. `pose_error` (roll, pitch; rad) is added to the recorded
-/// camera pose, as the renderer's camera_pose_error.bias would. With `localizer_feedback` a
-/// Localizer runs on the points and its track goes back to the pipeline (FieldPoseFeedback, as
-/// in houghloc-offline's full mode), so the corrector can match the points to the map.
-FolderRun runFolder(const std::string& name, std::optional<bool> correct_pose = std::nullopt,
-                    const Eigen::Vector2d& pose_error = Eigen::Vector2d::Zero(),
-                    bool localizer_feedback = false, const std::string& measured_camera = "") {
+/// How runFolder runs a fixture.
+struct RunOptions {
+  std::optional<bool> correct_pose;  ///< the pitch/roll corrector on or off (none: default config)
+  /// (roll, pitch), rad, added to the recorded camera pose, as the renderer's
+  /// camera_pose_error.bias would (every camera alike)
+  Eigen::Vector2d pose_error = Eigen::Vector2d::Zero();
+  /// A Localizer runs on the points and its track goes back to the pipeline (FieldPoseFeedback,
+  /// as in houghloc-offline's full mode), so the corrector can match the points to the map.
+  bool localizer_feedback = false;
+  std::string measured_camera;     ///< recordings of several cameras: the one measured (all: "")
+  bool shared_correction = false;  ///< pose_correction.shared_between_cameras
+};
+
+/// Runs the pipeline over a fixture folder, one pipeline per camera as in houghloc-offline.
+FolderRun runFolder(const std::string& name, const RunOptions& options = {}) {
   const std::string folder = std::string(HOUGHLOC_VISION_FIXTURES) + "/" + name;
   const Recording rec = readRecording(folder);
   EXPECT_TRUE(rec.field.has_value()) << folder;
@@ -60,12 +67,13 @@ FolderRun runFolder(const std::string& name, std::optional<bool> correct_pose = 
     if (arc.isFullCircle() && arc.center.norm() < 1e-6)
       config.segments.circle_radius_m = arc.radius;
   }
-  if (correct_pose) config.pose_correction.enabled = *correct_pose;
+  if (options.correct_pose) config.pose_correction.enabled = *options.correct_pose;
   // One pipeline (and corrector) per camera, as in houghloc-offline.
   std::map<std::string, std::unique_ptr<VisionPipeline>> pipelines;
   std::optional<Localizer> localizer;
   FieldPoseFeedback feedback(0);
-  if (localizer_feedback) localizer.emplace(*rec.field);
+  if (options.localizer_feedback) localizer.emplace(*rec.field);
+  const VisionPipeline* first_pipeline = nullptr;
   VisionMetricsAccumulator metrics(*rec.field);
   std::vector<double> errors, second_half_errors;
   FolderRun run;
@@ -75,14 +83,17 @@ FolderRun runFolder(const std::string& name, std::optional<bool> correct_pose = 
     const cv::Mat image = cv::imread((fs::path(folder) / frame.image).string(), cv::IMREAD_COLOR);
     EXPECT_FALSE(image.empty()) << frame.image;
     Pose3 recorded = frame.robot_T_camera;
-    recorded.roll += pose_error.x();
-    recorded.pitch += pose_error.y();
+    recorded.roll += options.pose_error.x();
+    recorded.pitch += options.pose_error.y();
     const std::optional<Pose2> field_T_robot =
         localizer ? feedback.guessFor(i, frame.odometry) : std::nullopt;
     std::unique_ptr<VisionPipeline>& pipeline = pipelines[frame.camera_id];
     if (!pipeline) {
       pipeline = std::make_unique<VisionPipeline>(rec.intrinsicsFor(frame), config);
       if (localizer) pipeline->setFieldModel(std::make_shared<const FieldModel>(*rec.field));
+      if (options.shared_correction && first_pipeline)
+        pipeline->sharePoseCorrection(*first_pipeline);
+      if (!first_pipeline) first_pipeline = pipeline.get();
     }
     const VisionResult result = pipeline->process(image, recorded, frame.t_us, field_T_robot);
     if (localizer) {
@@ -90,7 +101,7 @@ FolderRun runFolder(const std::string& name, std::optional<bool> correct_pose = 
                        localizer->process(frame.t_us, frame.odometry, {recorded}, result.ground));
       feedback.consumed(i);
     }
-    if (!measured_camera.empty() && frame.camera_id != measured_camera) continue;
+    if (!options.measured_camera.empty() && frame.camera_id != options.measured_camera) continue;
     if (result.diagnostics.pose_correction_map_inliers > 0) ++run.map_frames;
     ++run.frames;
     const auto truth = groundTruthAt(rec.ground_truth, frame.t_us);
@@ -149,7 +160,9 @@ class VisionAccuracy : public ::testing::TestWithParam<AccuracyCase> {};
 
 TEST_P(VisionAccuracy, MeetsTheThresholds) {
   const AccuracyCase& c = GetParam();
-  const FolderRun run = runFolder(c.name, std::nullopt, Eigen::Vector2d::Zero(), false, c.camera);
+  RunOptions options;
+  options.measured_camera = c.camera;
+  const FolderRun run = runFolder(c.name, options);
   print(std::string(c.name) + " " + c.camera, run);
   printCorrection(run);
   // The corrector is on (default); with exact extrinsics it may apply only a negligible tilt.
@@ -192,10 +205,15 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(VisionAccuracy, PitchRollCorrectionLeavesExactExtrinsicsAlone) {
   for (const char* name : {"spl_nao-top_exact", "spl_nao-top_exact_seed201", "spl_nao-top_walk_300",
                            "spl_nao-top_walk_robots_300"}) {
-    const FolderRun off = runFolder(name, false);
+    RunOptions off_options;
+    off_options.correct_pose = false;
+    const FolderRun off = runFolder(name, off_options);
     print(std::string(name) + ", corrector off", off);
     for (bool feedback : {false, true}) {
-      const FolderRun on = runFolder(name, true, Eigen::Vector2d::Zero(), feedback);
+      RunOptions on_options;
+      on_options.correct_pose = true;
+      on_options.localizer_feedback = feedback;
+      const FolderRun on = runFolder(name, on_options);
       print(std::string(name) + (feedback ? ", corrector on, map" : ", corrector on"), on);
       printCorrection(on);
       EXPECT_EQ(on.final_correction, Eigen::Vector2d::Zero()) << name << " " << feedback;
@@ -224,6 +242,7 @@ struct CorrectionCase {
   double max_error_deg;              ///< |final estimate - truth| per axis, with the track
   double min_precision = 0.9;        ///< all frames, with the track (the first ones uncorrected)
   const char* measured_camera = "";  ///< recordings of several cameras: the one measured
+  bool shared_correction = false;    ///< one corrector for all cameras
 };
 
 void PrintTo(const CorrectionCase& c, std::ostream* os) { *os << c.corrupted; }
@@ -234,11 +253,14 @@ TEST_P(PitchRollCorrection, RemovesAConstantTiltError) {
   const CorrectionCase& c = GetParam();
   const Eigen::Vector2d error =
       c.add_error ? Eigen::Vector2d(kDeg, 2.0 * kDeg) : Eigen::Vector2d::Zero();
-  const std::string camera = c.measured_camera;
-  const FolderRun exact = runFolder(c.exact, false, Eigen::Vector2d::Zero(), false, camera);
-  const FolderRun uncorrected = runFolder(c.corrupted, false, error, false, camera);
-  const FolderRun vision_only = runFolder(c.corrupted, true, error, false, camera);
-  const FolderRun map = runFolder(c.corrupted, true, error, true, camera);
+  const auto run = [&](const char* name, bool correct, const Eigen::Vector2d& pose_error,
+                       bool feedback) {
+    return runFolder(name, {correct, pose_error, feedback, c.measured_camera, c.shared_correction});
+  };
+  const FolderRun exact = run(c.exact, false, Eigen::Vector2d::Zero(), false);
+  const FolderRun uncorrected = run(c.corrupted, false, error, false);
+  const FolderRun vision_only = run(c.corrupted, true, error, false);
+  const FolderRun map = run(c.corrupted, true, error, true);
   print("exact", exact);
   print("2/1 deg error, uncorrected", uncorrected);
   print("2/1 deg error, corrected, vision only", vision_only);
@@ -260,7 +282,11 @@ TEST_P(PitchRollCorrection, RemovesAConstantTiltError) {
   EXPECT_LT(ratio(map), c.max_ratio_map);
   EXPECT_LT(converged(map), c.max_converged_map);
   EXPECT_GT(map.metrics.precision, c.min_precision);
-  EXPECT_GT(map.metrics.precision, uncorrected.metrics.precision);
+  // Where the tilt error moves points out of the 5 cm precision radius (not on a NAO's bottom
+  // camera, which sees 0.2-1.2 m ahead: 1 cm there), the correction must bring them back.
+  if (uncorrected.metrics.precision < exact.metrics.precision - 0.01) {
+    EXPECT_GT(map.metrics.precision, uncorrected.metrics.precision);
+  }
   EXPECT_NEAR(map.final_correction.x(), -1.0 * kDeg, c.max_error_deg * kDeg);
   EXPECT_NEAR(map.final_correction.y(), -2.0 * kDeg, c.max_error_deg * kDeg);
 }
@@ -293,13 +319,19 @@ INSTANTIATE_TEST_SUITE_P(
                        0.03},
         CorrectionCase{"spl2019_nao-top_random_robots", "spl2019_nao-top_random_robots", true, 3.0,
                        3.0, 3.0, 0.03},
-        // A NAO's top camera, taking turns with the bottom one (never corrected: its few near
-        // points on one or two lines do not show the tilt).
+        // A NAO's top camera, taking turns with the bottom one, which on its own is never
+        // corrected: its few near points on one or two lines do not show the tilt.
         CorrectionCase{"spl_nao_walk_robots_300", "spl_nao_walk_robots_300", true, 4.0, 1.5, 1.5,
-                       0.03, 0.9, "nao-top"}),
+                       0.03, 0.9, "nao-top"},
+        // Both cameras off by the same angles (a head joint offset) and one shared corrector.
+        CorrectionCase{"spl_nao_walk_robots_300", "spl_nao_walk_robots_300", true, 1.5, 1.5, 1.5,
+                       0.03, 0.97, "nao-bottom", true},
+        CorrectionCase{"spl_nao_walk_robots_300", "spl_nao_walk_robots_300", true, 4.0, 1.5, 1.5,
+                       0.03, 0.9, "nao-top", true}),
     [](const auto& info) {
       std::string name = info.param.corrupted;
       if (*info.param.measured_camera) name += std::string("_") + info.param.measured_camera;
+      if (info.param.shared_correction) name += "_shared";
       std::replace(name.begin(), name.end(), '-', '_');
       return name;
     });

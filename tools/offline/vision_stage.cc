@@ -49,6 +49,10 @@ class VisionWorker {
     if (!pipeline) {
       pipeline = std::make_unique<VisionPipeline>(*out.intrinsics, context_.vision_config);
       if (field_) pipeline->setFieldModel(field_);
+      if (context_.vision_config.pose_correction.shared_between_cameras && first_pipeline_) {
+        pipeline->sharePoseCorrection(*first_pipeline_);
+      }
+      if (!first_pipeline_) first_pipeline_ = pipeline.get();
     }
     std::optional<Pose2> field_T_robot;
     if (field_) field_T_robot = feedback_->guessFor(index, out.frame->odometry);
@@ -71,6 +75,7 @@ class VisionWorker {
   FieldPoseFeedback* feedback_;
   std::shared_ptr<const FieldModel> field_;  ///< set when there is feedback
   std::map<std::string, std::unique_ptr<VisionPipeline>> pipelines_;
+  const VisionPipeline* first_pipeline_ = nullptr;  ///< whose corrector the others may share
 };
 
 /// A bounded hand-over queue between the vision thread and the consumer.
