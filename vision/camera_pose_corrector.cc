@@ -45,6 +45,7 @@ void CameraPoseCorrector::reset() {
   last_map_inliers_ = 0;
   line_sigma_.setConstant(std::numeric_limits<double>::infinity());
   estimate_.setZero();
+  runaway_ = false;
   applied_.setZero();
   sigma_.setConstant(std::numeric_limits<double>::infinity());
   frames_.clear();
@@ -172,7 +173,7 @@ void CameraPoseCorrector::cacheQuadratic(Frame* frame) const {
 bool CameraPoseCorrector::solve() {
   // The prior keeps directions the lines seen so far do not constrain at 0.
   const double prior = 1.0 / (config_.prior_sigma_rad * config_.prior_sigma_rad);
-  Eigen::Vector2d c = estimate_;
+  Eigen::Vector2d c = runaway_ ? Eigen::Vector2d::Zero() : estimate_;
   Eigen::Matrix2d information = Eigen::Matrix2d::Zero();
   Eigen::Matrix2d line_information = Eigen::Matrix2d::Zero();  ///< of the lines and arcs alone
   double chi2 = 0.0;
@@ -229,6 +230,10 @@ bool CameraPoseCorrector::solve() {
   }
   const double limit = config_.max_correction_rad;
   estimate_ = c.cwiseMax(-limit).cwiseMin(limit);
+  // A solution at or beyond the limit is a runaway of the linearised steps on too little data:
+  // the first segments of a walk with a 2 deg error once sent it to +4 deg, then to -4 deg, and
+  // it stayed there, applied, for 3 s. It is not applied, and the next solve starts from 0.
+  runaway_ = (c.cwiseAbs().array() >= limit).any();
   // Covariance of the estimate; each frame's heading is a nuisance parameter, and sigmas from
   // a few spots' rms may be too small, so the residual chi^2 per degree of freedom scales it up.
   long nuisance = 2;  // roll, pitch; plus each frame's heading and each arc's centre
@@ -320,7 +325,7 @@ bool CameraPoseCorrector::update(const std::vector<GroundSegment>& segments,
   for (int k = 0; k < 2; ++k) {
     const bool significant = std::abs(estimate_(k)) >= config_.significance_sigmas * sigma_(k) &&
                              std::abs(estimate_(k)) >= config_.min_correction_rad;
-    applied_(k) = enough && significant ? estimate_(k) : 0.0;
+    applied_(k) = enough && significant && !runaway_ ? estimate_(k) : 0.0;
   }
   return true;
 }

@@ -37,7 +37,8 @@ struct CameraPoseCorrectionConfig {
   double huber_sigmas = 3.0;            ///< residuals beyond this many sigmas count linearly
   double prior_sigma_rad = 0.05;        ///< weak pull toward no correction (3 deg), for directions
                                         ///< the lines seen so far do not constrain
-  double max_correction_rad = 0.07;     ///< |roll| and |pitch| corrections are clamped (4 deg)
+  double max_correction_rad = 0.07;     ///< larger |roll| or |pitch| estimates (4 deg) are
+                                        ///< runaways on too little data: not applied
   int iterations = 8;                   ///< Gauss-Newton steps per frame (on the linearised
                                         ///< residuals: cheap)
   double relinearize_rad = 3e-4;        ///< a frame's residuals are re-linearised once the
@@ -179,6 +180,7 @@ class CameraPoseCorrector {
   std::deque<Frame> frames_;
   int last_map_inliers_ = 0;
   Eigen::Vector2d estimate_ = Eigen::Vector2d::Zero();
+  bool runaway_ = false;  ///< the last solve ended at max_correction_rad (estimate_ clamped)
   Eigen::Vector2d applied_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d sigma_ = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
   /// The estimate's sigma from the lines and arcs alone (the map residuals left out).

@@ -29,3 +29,5 @@ render_fixture_list(300
   "msl_adult_walk_robots_300|${W} --standard msl --camera adult --seed 108"
   "spl2019_nao-top_walk_robots_300|${W} --standard spl2019 --camera nao-top --seed 109"
   "spl_nao_walk_robots_300|${W} --standard spl --camera nao --seed 110")
+# The first 4 s of a NAO walk on which the corrector once ran away to its 4 deg limit.
+render_fixture_list(120 "spl_nao_walk_robots_120|${W} --standard spl --camera nao --seed 311")
