@@ -77,9 +77,9 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   diag.time_spots_ms = msSince(&step);
 
   // 5. Undistort only the spots; 6. segments, circles and the pitch/roll correction, which
-  // then applies to this frame's projection already. The corrector sees all spots: the goal
-  // frame's bars dropped below are parallel or perpendicular to the lines anyway, and with a
-  // wrong tilt the boundary gap would be measured wrongly.
+  // then applies to this frame's projection already. The corrector sees all spots but those on
+  // the robot's own feet: the goal frame's bars dropped below are parallel or perpendicular to
+  // the lines anyway, and with a wrong tilt the boundary gap would be measured wrongly.
   const std::vector<SpotRay> all_rays = dropSpotsOnOwnBody(
       spotRays(camera_, result.spots), pose, config_.own_body, &diag.dropped_on_own_body);
   diag.time_project_ms = msSince(&step);

@@ -98,7 +98,8 @@ class VisionPipeline {
   /// both cameras' lines (each frame keeps its own recorded pose): for cameras whose recorded
   /// poses are off by the same roll and pitch, e.g. a head joint offset on a NAO, whose bottom
   /// camera alone sees too little to find its own (CameraPoseCorrectionConfig::
-  /// shared_between_cameras). This pipeline's estimate so far is dropped.
+  /// shared_between_cameras). This pipeline's estimate so far is dropped; the two must not
+  /// process() at the same time, and resetPoseCorrection() on either resets both.
   void sharePoseCorrection(const VisionPipeline& other) { corrector_ = other.corrector_; }
 
   const VisionConfig& config() const { return config_; }
