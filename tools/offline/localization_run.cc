@@ -89,11 +89,7 @@ int runLocalizationMode(const OfflineContext& context, const std::string& title,
         stats.load_ms.push_back(v.load_ms);
         if (!v.skipped) {
           stats.vision_ms.push_back(v.vision_ms);
-          const VisionDiagnostics& d = v.result.diagnostics;
-          stats.correction = d.pose_correction_rad;
-          stats.estimate = d.pose_correction_estimate_rad;
-          stats.sigma = d.pose_correction_sigma_rad;
-          if (d.pose_correction_map_inliers > 0) ++stats.map_matched_frames;
+          stats.corrections.add(v.frame->camera_id, v.result.diagnostics);
         }
         stats.localization_ms.push_back(r.localization_ms);
         stats.global_ms.push_back(r.global_ran ? r.global_ms : 0.0);

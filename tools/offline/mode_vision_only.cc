@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <limits>
 #include <opencv2/imgcodecs.hpp>
 
+#include "tools/offline/correction_summary.h"
 #include "tools/offline/offline_output.h"
 #include "tools/offline/overlay.h"
 #include "tools/offline/vision_metrics.h"
@@ -22,9 +22,7 @@ struct RunStats {
   int processed = 0, skipped = 0, scored = 0;
   long points = 0;
   double total_ms = 0.0, max_ms = 0.0;
-  Eigen::Vector2d last_correction = Eigen::Vector2d::Zero();
-  Eigen::Vector2d last_estimate = Eigen::Vector2d::Zero();
-  Eigen::Vector2d last_sigma = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  CorrectionSummary corrections;
 };
 
 void printSummary(const RunStats& s, const std::optional<VisionMetrics>& metrics,
@@ -36,15 +34,7 @@ void printSummary(const RunStats& s, const std::optional<VisionMetrics>& metrics
     std::printf("  points/frame %.1f   vision time mean %.3f ms, max %.3f ms\n",
                 static_cast<double>(s.points) / s.processed, s.total_ms / s.processed, s.max_ms);
   }
-  std::printf("  camera correction at the end: roll %.3f deg, pitch %.3f deg\n",
-              s.last_correction.x() * 57.29578, s.last_correction.y() * 57.29578);
-  if (std::isfinite(s.last_sigma.maxCoeff())) {
-    // The estimate before the significance gate: what to add to camera.yaml's roll and pitch
-    // when it is well determined and the recording's calibration is known to be off.
-    std::printf("  corrector estimate: roll %.3f +- %.3f deg, pitch %.3f +- %.3f deg\n",
-                s.last_estimate.x() * 57.29578, s.last_sigma.x() * 57.29578,
-                s.last_estimate.y() * 57.29578, s.last_sigma.y() * 57.29578);
-  }
+  s.corrections.print();
   if (!metrics) {
     std::printf("  no metrics (needs groundtruth.csv, truth/visible.csv and a field)\n");
     return;
@@ -94,9 +84,7 @@ int runVisionOnly(const OfflineContext& context) {
     stats.points += static_cast<long>(result.ground.points.size());
     stats.total_ms += result.diagnostics.time_total_ms;
     stats.max_ms = std::max(stats.max_ms, result.diagnostics.time_total_ms);
-    stats.last_correction = result.diagnostics.pose_correction_rad;
-    stats.last_estimate = result.diagnostics.pose_correction_estimate_rad;
-    stats.last_sigma = result.diagnostics.pose_correction_sigma_rad;
+    stats.corrections.add(frame.camera_id, result.diagnostics);
     for (const GroundPoint& p : result.ground.points) {
       points_csv.writeRow({points_csv.format(frame.t_us), points_csv.format(p.pixel.x()),
                            points_csv.format(p.pixel.y()), points_csv.format(p.p_robot.x()),

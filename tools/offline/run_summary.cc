@@ -56,15 +56,7 @@ void printRunSummary(const std::string& title, const RunStats& s, int threads) {
     std::printf(" %s %d (%.0f%%)", name, count, frames > 0 ? 100.0 * count / frames : 0.0);
   }
   std::printf("\n");
-  constexpr double kDeg = 57.29577951308232;
-  std::printf("  camera correction at the end: roll %.3f deg, pitch %.3f deg",
-              s.correction.x() * kDeg, s.correction.y() * kDeg);
-  if (std::isfinite(s.sigma.maxCoeff())) {
-    std::printf(" (estimate %.3f +- %.3f, %.3f +- %.3f deg", s.estimate.x() * kDeg,
-                s.sigma.x() * kDeg, s.estimate.y() * kDeg, s.sigma.y() * kDeg);
-    std::printf("; %d frames matched to the map)", s.map_matched_frames);
-  }
-  std::printf("\n");
+  s.corrections.print();
 }
 
 }  // namespace houghloc

@@ -1,10 +1,10 @@
 #pragma once
 
-#include <Eigen/Core>
-#include <limits>
 #include <map>
 #include <string>
 #include <vector>
+
+#include "tools/offline/correction_summary.h"
 
 namespace houghloc {
 
@@ -16,13 +16,8 @@ struct RunStats {
   std::vector<double> load_ms, vision_ms, localization_ms, global_ms, total_ms;
   int global_runs = 0;  ///< frames on which the global localizer ran
   std::map<std::string, int> status_counts;
-  double wall_s = 0.0;  ///< whole run, including output
-  // The pitch/roll corrector after the last processed frame (rad; sigma infinite before any
-  // estimate) and the frames whose points it matched to the map at the localizer's track.
-  Eigen::Vector2d correction = Eigen::Vector2d::Zero();
-  Eigen::Vector2d estimate = Eigen::Vector2d::Zero();
-  Eigen::Vector2d sigma = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-  int map_matched_frames = 0;
+  double wall_s = 0.0;            ///< whole run, including output
+  CorrectionSummary corrections;  ///< the pitch/roll corrector per camera
 };
 
 /// The summary table on stdout: frames processed/skipped, mean and p95 time per frame for image
