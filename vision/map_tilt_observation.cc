@@ -1,8 +1,10 @@
 #include "vision/map_tilt_observation.h"
 
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <utility>
 
 #include "field_models/field_distance.h"
@@ -84,6 +86,7 @@ int MapTiltObservation::match(const FieldModel& field, const std::vector<Eigen::
     if (!(m.normal.norm() > 1e-9)) continue;
     m.normal.normalize();
     m.point = nearest.closest_point;
+    m.feature = nearest.feature;
     m.valid = true;
     ++inliers_;
   }
@@ -100,12 +103,32 @@ int MapTiltObservation::associate(const FieldModel& field, const Pose3& robot_T_
   const Pose2 moved = guess_.inverse() * fitted_;
   const bool near_guess = moved.translation().norm() <= config.max_pose_shift_m &&
                           std::abs(moved.theta) <= config.max_pose_turn_rad;
-  if (!near_guess || inliers_ < config.min_inliers ||
+  if (!near_guess || inliers_ < config.min_inliers || !showsTilt(points, config) ||
       inliers_ < config.min_inlier_share * static_cast<double>(tried)) {
     for (Match& m : matches_) m.valid = false;
     inliers_ = 0;
   }
   return inliers_;
+}
+
+bool MapTiltObservation::showsTilt(const std::vector<Eigen::Vector2d>& points,
+                                   const MapTiltConfig& config) const {
+  std::map<std::pair<int, int>, int> per_feature;  // (kind, index) -> matches
+  Eigen::AlignedBox2d extent;
+  for (size_t i = 0; i < matches_.size(); ++i) {
+    const Match& m = matches_[i];
+    if (!m.valid) continue;
+    ++per_feature[{static_cast<int>(m.feature.kind), m.feature.index}];
+    extent.extend(points[i]);
+  }
+  if (extent.isEmpty() || !(extent.diagonal().norm() >= config.min_spread_m)) return false;
+  int lines = 0;
+  for (const auto& [feature, count] : per_feature) {
+    if (count < config.min_points_per_line) continue;
+    if (feature.first == static_cast<int>(FeatureKind::kArc)) return true;
+    ++lines;
+  }
+  return lines >= 2;
 }
 
 void MapTiltObservation::residuals(const Pose3& robot_T_camera, const MapTiltConfig& config,

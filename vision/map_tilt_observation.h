@@ -26,6 +26,12 @@ struct MapTiltConfig {
   double max_pose_shift_m = 0.15;   ///< the fitted pose must stay this close to the given one
   double max_pose_turn_rad = 0.05;  ///< (3 deg); farther, the given pose was wrong and the fit
                                     ///< found some other lines that happen to fit
+  int min_points_per_line = 3;      ///< matches on a second line (or an arc) needed: points on
+                                    ///< one line leave the tilt to numerical noise (showsTilt)
+  double min_spread_m = 1.0;        ///< extent of the matched points (bounding-box diagonal):
+                                    ///< in a smaller patch (a NAO's bottom camera sees 0.2-0.6 m
+                                    ///< ahead) the fitted pose's turn and shift mimic a tilt, and
+                                    ///< the fit turned numerical noise into a confident 2 deg
 };
 
 /// One frame's line points matched to the field map near a field pose that comes from outside
@@ -61,8 +67,15 @@ class MapTiltObservation {
   struct Match {
     Eigen::Vector2d point = Eigen::Vector2d::Zero();
     Eigen::Vector2d normal = Eigen::Vector2d::Zero();
+    FeatureRef feature;  ///< the map line or arc
     bool valid = false;
   };
+
+  /// Whether the matches can show a tilt at all once the frame's pose is fitted: points on a
+  /// single straight line cannot (a line has two degrees of freedom, the pose three), so they
+  /// must lie on two lines or on an arc, each with min_points_per_line matches, and spread
+  /// over min_spread_m (`points`: robot frame).
+  bool showsTilt(const std::vector<Eigen::Vector2d>& points, const MapTiltConfig& config) const;
 
   std::vector<Eigen::Vector2d> project(const Pose3& robot_T_camera) const;
   /// The field pose that best fits `points` to their matches, from `start`.

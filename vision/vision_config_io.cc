@@ -79,7 +79,9 @@ ConfigSection visionSection(VisionConfig& c) {
             HL_MEMBER(c.pose_correction.map, min_inlier_share),
             HL_MEMBER(c.pose_correction.map, pose_fit_iterations),
             HL_MEMBER(c.pose_correction.map, max_pose_shift_m),
-            HL_MEMBER(c.pose_correction.map, max_pose_turn_rad)}}}}}},
+            HL_MEMBER(c.pose_correction.map, max_pose_turn_rad),
+            HL_MEMBER(c.pose_correction.map, min_points_per_line),
+            HL_MEMBER(c.pose_correction.map, min_spread_m)}}}}}},
   };
   return section;
 }

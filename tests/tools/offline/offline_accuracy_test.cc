@@ -113,7 +113,7 @@ std::pair<double, double> finalCorrection(const std::string& output, const std::
 /// A NAO walk, both cameras 2 / 1 deg off. With a corrector per camera the top one is corrected,
 /// the bottom one never (too little in view). With one corrector for both cameras both end with
 /// the whole error corrected, and tracking stays within 10 cm and 3 deg on >= 85 % of the frames
-/// (measured 89.9 %: frames 14-24, before the first correction, are off; with the corrector's
+/// (measured 89.3 %: frames 14-24, before the first correction, are off; with the corrector's
 /// early 4 deg runaway, since fixed, 57.7 %).
 TEST(OfflineNaoPoseError, SharedCorrectorCorrectsBothCameras) {
   const fs::path folder = kFixtures / "spl_nao_walk_pose-error";
