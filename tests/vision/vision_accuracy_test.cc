@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
@@ -14,6 +13,7 @@
 
 #include "field_models/field_distance.h"
 #include "localization/localizer.h"
+#include "tools/offline/camera_pipelines.h"
 #include "tools/offline/field_pose_feedback.h"
 #include "tools/offline/vision_metrics.h"
 #include "tools/recording/recording.h"
@@ -69,12 +69,13 @@ FolderRun runFolder(const std::string& name, const RunOptions& options = {}) {
       config.segments.circle_radius_m = arc.radius;
   }
   if (options.correct_pose) config.pose_correction.enabled = *options.correct_pose;
-  // One pipeline (and corrector) per camera, as in houghloc-offline.
-  std::map<std::string, std::unique_ptr<VisionPipeline>> pipelines;
+  config.pose_correction.shared_between_cameras = options.shared_correction;
   std::optional<Localizer> localizer;
   FieldPoseFeedback feedback(0);
   if (options.localizer_feedback) localizer.emplace(*rec.field);
-  const VisionPipeline* first_pipeline = nullptr;
+  // One pipeline (and corrector) per camera, as in houghloc-offline.
+  CameraPipelines pipelines(config,
+                            localizer ? std::make_shared<const FieldModel>(*rec.field) : nullptr);
   VisionMetricsAccumulator metrics(*rec.field);
   std::vector<double> errors, second_half_errors;
   FolderRun run;
@@ -88,15 +89,8 @@ FolderRun runFolder(const std::string& name, const RunOptions& options = {}) {
     recorded.pitch += options.pose_error.y();
     const std::optional<Pose2> field_T_robot =
         localizer ? feedback.guessFor(i, frame.odometry) : std::nullopt;
-    std::unique_ptr<VisionPipeline>& pipeline = pipelines[frame.camera_id];
-    if (!pipeline) {
-      pipeline = std::make_unique<VisionPipeline>(rec.intrinsicsFor(frame), config);
-      if (localizer) pipeline->setFieldModel(std::make_shared<const FieldModel>(*rec.field));
-      if (options.shared_correction && first_pipeline)
-        pipeline->sharePoseCorrection(*first_pipeline);
-      if (!first_pipeline) first_pipeline = pipeline.get();
-    }
-    const VisionResult result = pipeline->process(image, recorded, frame.t_us, field_T_robot);
+    const VisionResult result =
+        pipelines.forFrame(rec, frame).process(image, recorded, frame.t_us, field_T_robot);
     if (localizer) {
       feedback.publish(i, frame.odometry,
                        localizer->process(frame.t_us, frame.odometry, {recorded}, result.ground));

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "tools/offline/camera_pipelines.h"
 #include "tools/offline/offline_output.h"
 
 namespace houghloc {
@@ -27,9 +28,12 @@ double msSince(Clock::time_point start) {
 class VisionWorker {
  public:
   VisionWorker(const OfflineContext& context, bool keep_images, FieldPoseFeedback* feedback)
-      : context_(context), keep_images_(keep_images), feedback_(feedback) {
-    if (feedback_ && context_.field) field_ = std::make_shared<const FieldModel>(*context_.field);
-  }
+      : context_(context),
+        keep_images_(keep_images),
+        feedback_(feedback),
+        with_map_(feedback_ && context_.field),
+        pipelines_(context_.vision_config,
+                   with_map_ ? std::make_shared<const FieldModel>(*context_.field) : nullptr) {}
 
   VisionFrame process(int index) {
     const Recording& rec = context_.recording;
@@ -45,21 +49,13 @@ class VisionWorker {
       out.skipped = true;
       return out;
     }
-    auto& pipeline = pipelines_[out.frame->camera_id];
-    if (!pipeline) {
-      pipeline = std::make_unique<VisionPipeline>(*out.intrinsics, context_.vision_config);
-      if (field_) pipeline->setFieldModel(field_);
-      if (context_.vision_config.pose_correction.shared_between_cameras && first_pipeline_) {
-        pipeline->sharePoseCorrection(*first_pipeline_);
-      }
-      if (!first_pipeline_) first_pipeline_ = pipeline.get();
-    }
+    VisionPipeline& pipeline = pipelines_.forFrame(rec, *out.frame);
     std::optional<Pose2> field_T_robot;
-    if (field_) field_T_robot = feedback_->guessFor(index, out.frame->odometry);
+    if (with_map_) field_T_robot = feedback_->guessFor(index, out.frame->odometry);
     const auto start = Clock::now();
     try {
       out.result =
-          pipeline->process(*image, out.frame->robot_T_camera, out.frame->t_us, field_T_robot);
+          pipeline.process(*image, out.frame->robot_T_camera, out.frame->t_us, field_T_robot);
     } catch (const std::invalid_argument& e) {
       throw std::runtime_error((fs::path(rec.folder) / out.frame->image).string() + ": " +
                                e.what());
@@ -73,9 +69,8 @@ class VisionWorker {
   const OfflineContext& context_;
   bool keep_images_;
   FieldPoseFeedback* feedback_;
-  std::shared_ptr<const FieldModel> field_;  ///< set when there is feedback
-  std::map<std::string, std::unique_ptr<VisionPipeline>> pipelines_;
-  const VisionPipeline* first_pipeline_ = nullptr;  ///< whose corrector the others may share
+  bool with_map_;  ///< the localizer's track comes back and there is a map to match it to
+  CameraPipelines pipelines_;
 };
 
 /// A bounded hand-over queue between the vision thread and the consumer.
