@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the README's example commands as written (every ```bash block right after a line
 # `<!-- readme-examples -->`), from a scratch folder that looks like the repository root after
-# tools/setup.sh: build/ is this build tree, tools/ and docs/ are the sources'. Each command must
+# tools/setup.sh: build/ is this build tree, everything else links to the sources. Each command must
 # exit 0; a command ending in `# runs until stopped` is stopped after 3 s and must still be
 # running then. Fails when the README has no such block, so the examples cannot drop out of
 # the test unnoticed.
@@ -13,7 +13,9 @@ readme="$src/README.md"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 ln -s "$bin" "$scratch/build"
-for entry in tools docs field_models CMakeLists.txt; do ln -s "$src/$entry" "$scratch/$entry"; done
+for entry in "$src"/*; do
+  [[ $(basename "$entry") == build* ]] || ln -s "$entry" "$scratch/$(basename "$entry")"
+done
 
 # The example lines, `\` continuations joined; blank and comment-only lines dropped. A trailing
 # comment stays: bash ignores it.
