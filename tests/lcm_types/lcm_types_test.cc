@@ -39,7 +39,7 @@ pose_hypothesis_t hypothesis(int id, double x) {
   h.theta = 0.5;
   for (int i = 0; i < 9; ++i) h.covariance[i] = 0.01 * (i + 1);
   h.weight = 0.75;
-  h.age = 3.5;
+  h.age = 35;
   return h;
 }
 
@@ -75,7 +75,7 @@ TEST(LcmTypes, PoseHypothesesRoundTrip) {
   EXPECT_EQ(out.hypotheses[1].id, 9);
   EXPECT_EQ(out.hypotheses[1].x, -1.5);
   EXPECT_EQ(out.hypotheses[0].covariance[8], 0.09);
-  EXPECT_EQ(out.hypotheses[0].age, 3.5);
+  EXPECT_EQ(out.hypotheses[0].age, 35);
 }
 
 TEST(LcmTypes, InputsRoundTrip) {
