@@ -1,0 +1,102 @@
+// The Qt editor on the offscreen platform: select and drag an endpoint with simulated mouse
+// events, undo, redo, save, and compare the saved map with the expected one.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QtTest/QTest>
+#include <cstdio>
+#include <memory>
+
+#include "field_models/field_yaml.h"
+#include "tools/fieldmap/editor/editor_window.h"
+#include "tools/fieldmap/editor_model/document_io.h"
+
+namespace houghloc::fieldmap {
+namespace {
+
+class EditorWidget : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    static int argc = 1;
+    static char name[] = "editor_widget_test";
+    static char* argv[] = {name, nullptr};
+    app_ = new QApplication(argc, argv);
+  }
+
+  void SetUp() override {
+    window_ = std::make_unique<EditorWindow>(standardDocument("spl"));
+    window_->show();
+    QApplication::processEvents();
+    window_->view()->fitField();
+    QApplication::processEvents();
+  }
+
+  /// Viewport pixel of a field point.
+  QPoint pixel(double x, double y) const {
+    return window_->view()->mapFromScene(toScene(Eigen::Vector2d(x, y)));
+  }
+  QWidget* viewport() const { return window_->view()->viewport(); }
+
+  static QApplication* app_;
+  std::unique_ptr<EditorWindow> window_;
+};
+QApplication* EditorWidget::app_ = nullptr;
+
+TEST_F(EditorWidget, DragEndpointUndoRedoSave) {
+  const EditorDocument original = window_->document();
+  const FeatureId halfway = original.idAt(EditorKind::kSegment, 4);  // (0, -3) -> (0, 3)
+
+  QTest::mouseClick(viewport(), Qt::LeftButton, {}, pixel(0.0, 1.5));  // select it
+  ASSERT_EQ(window_->selection().size(), 1u);
+  EXPECT_EQ(window_->selection()[0], halfway);
+
+  // Drag its end handle from (0, 3) to (0.5, 2.5): no endpoint within 10 cm and 0.09 rad off
+  // every line direction, so only the 5 cm grid snaps and the end lands exactly there.
+  QTest::mousePress(viewport(), Qt::LeftButton, {}, pixel(0.0, 3.0));
+  QTest::mouseMove(viewport(), pixel(0.3, 2.7));
+  QTest::mouseMove(viewport(), pixel(0.5, 2.5));
+  QTest::mouseRelease(viewport(), Qt::LeftButton, {}, pixel(0.5, 2.5));
+
+  FieldModel expected = original.field();
+  expected.segments[4].b = Eigen::Vector2d(0.5, 2.5);
+  EXPECT_TRUE(sameField(window_->document().field(), expected, 1e-12));
+  EXPECT_FALSE(window_->undoStack()->isClean());
+  EXPECT_TRUE(window_->windowTitle().contains("*"));
+
+  window_->undoStack()->undo();
+  EXPECT_TRUE(sameField(window_->document().field(), original.field(), 0.0));
+  window_->undoStack()->redo();
+  EXPECT_TRUE(sameField(window_->document().field(), expected, 1e-12));
+
+  const QString path = QString::fromStdString(::testing::TempDir()) + "/editor_widget.yaml";
+  ASSERT_TRUE(window_->saveTo(path, true));
+  EXPECT_TRUE(window_->undoStack()->isClean());
+  EXPECT_TRUE(sameField(readFieldYaml(path.toStdString()), expected, 1e-12));
+  std::remove(path.toLocal8Bit().constData());
+}
+
+TEST_F(EditorWidget, MoveSelectionAndValidationSelectsFeature) {
+  const FeatureId mark = window_->document().idAt(EditorKind::kMark, 2);  // (3.2, 0)
+  QTest::mouseClick(viewport(), Qt::LeftButton, {}, pixel(3.2, 0.0));
+  ASSERT_EQ(window_->selection().size(), 1u);
+  ASSERT_EQ(window_->selection()[0], mark);
+  // Drag the mark itself 7 m along +x: outside the carpet (|x| <= 5.2).
+  QTest::mousePress(viewport(), Qt::LeftButton, {}, pixel(3.2, 0.0));
+  QTest::mouseMove(viewport(), pixel(4.0, 0.0));
+  QTest::mouseRelease(viewport(), Qt::LeftButton, {}, pixel(3.2 + 7.0, 0.0));
+  ASSERT_TRUE(window_->document().mark(mark).center.isApprox(Eigen::Vector2d(10.2, 0.0), 1e-9));
+
+  window_->select({});
+  QListWidget* list = window_->validationList();
+  ASSERT_EQ(list->count(), 1);
+  EXPECT_TRUE(list->item(0)->text().contains("outside"));
+  QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
+                    list->visualItemRect(list->item(0)).center());
+  ASSERT_EQ(window_->selection().size(), 1u);
+  EXPECT_EQ(window_->selection()[0], mark);
+  window_->undoStack()->setClean();  // no unsaved-changes prompt at teardown
+}
+
+}  // namespace
+}  // namespace houghloc::fieldmap

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <QListWidget>
+#include <QMainWindow>
+#include <QUndoStack>
+#include <vector>
+
+#include "tools/fieldmap/editor/field_view.h"
+#include "tools/fieldmap/editor/number_form.h"
+#include "tools/fieldmap/editor_model/snapping.h"
+#include "tools/fieldmap/editor_model/symmetry.h"
+
+class QLabel;
+
+namespace houghloc::fieldmap {
+
+/// `houghloc-fieldmap edit`: the map in a FieldView, the dimensions, property and validation
+/// panels, and a QUndoStack of the model's Edits.
+class EditorWindow : public QMainWindow {
+ public:
+  explicit EditorWindow(EditorDocument doc, QString path = {}, QWidget* parent = nullptr);
+
+  const EditorDocument& document() const { return doc_; }
+  const std::vector<FeatureId>& selection() const { return selection_; }
+  FieldView* view() const { return view_; }
+  QUndoStack* undoStack() const { return undo_; }
+  QListWidget* validationList() const { return issues_; }
+
+  /// Applies an edit through the undo stack (every change to the map goes here).
+  void apply(const Edit& edit);
+  /// Replaces the document without undo (used by the undo commands themselves).
+  void setDocument(const EditorDocument& doc);
+  void select(std::vector<FeatureId> features);
+  /// Writes the YAML map; false (and a message box unless quiet) on failure.
+  bool saveTo(const QString& path, bool quiet = false);
+
+  SnapConfig snap_config;
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void buildMenus();
+  void buildPanels();
+  void refresh();
+  void refreshProperties();
+  bool save();
+  bool saveAs();
+  void open();
+  void exportJson();
+  void mirrorSelection(Mirror mirror);
+  void addAtCentre(EditorKind kind);
+  void updateTitle();
+
+  EditorDocument doc_;
+  QString path_;
+  std::vector<FeatureId> selection_;
+  FieldView* view_;
+  QUndoStack* undo_;
+  QListWidget* issues_ = nullptr;
+  std::vector<FeatureId> issue_features_;  ///< per row of issues_; id -1 when map-wide
+  NumberForm* dimensions_ = nullptr;
+  NumberForm* properties_ = nullptr;
+  QLabel* property_title_ = nullptr;
+};
+
+}  // namespace houghloc::fieldmap
