@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QPushButton>
 #include <QtTest/QTest>
 #include <cstdio>
 #include <memory>
@@ -96,6 +100,47 @@ TEST_F(EditorWidget, MoveSelectionAndValidationSelectsFeature) {
   ASSERT_EQ(window_->selection().size(), 1u);
   EXPECT_EQ(window_->selection()[0], mark);
   window_->undoStack()->setClean();  // no unsaved-changes prompt at teardown
+}
+
+/// Types a value into the dimensions panel's spin box with this label, as a user would.
+void typeDimension(QWidget* window, const QString& label, const QString& value) {
+  for (QFormLayout* form : window->findChildren<QFormLayout*>()) {
+    for (int row = 0; row < form->rowCount(); ++row) {
+      auto* name = qobject_cast<QLabel*>(form->itemAt(row, QFormLayout::LabelRole)->widget());
+      if (!name || name->text() != label) continue;
+      auto* box =
+          qobject_cast<QDoubleSpinBox*>(form->itemAt(row, QFormLayout::FieldRole)->widget());
+      box->selectAll();
+      QTest::keyClicks(box, value);
+      QTest::keyClick(box, Qt::Key_Enter);
+      return;
+    }
+  }
+  FAIL() << "no field " << label.toStdString();
+}
+
+TEST_F(EditorWidget, DimensionsPanelBuildsSmallField) {
+  // The lab field of docs/editor.md: 7.5 x 5 m with a 0.5 m goal area, SPL otherwise.
+  typeDimension(window_.get(), "length (m)", "7.5");
+  typeDimension(window_.get(), "width (m)", "5");
+  typeDimension(window_.get(), "goal area length (m)", "0.5");
+  QPushButton* regenerate = nullptr;
+  for (QPushButton* b : window_->findChildren<QPushButton*>())
+    if (b->text() == "Regenerate rules layout") regenerate = b;
+  ASSERT_NE(regenerate, nullptr);
+  QTest::mouseClick(regenerate, Qt::LeftButton);
+
+  FieldDimensions expected = standardFieldDimensions("spl");
+  expected.length = 7.5;
+  expected.width = 5.0;
+  expected.goal_area_length = 0.5;
+  EXPECT_TRUE(sameField(window_->document().field(), makeField(expected), 1e-12));
+  EXPECT_TRUE(window_->document().isRulesShaped());
+  EXPECT_EQ(window_->validationList()->item(0)->text(), "map is valid");
+
+  const QString path = QString::fromStdString(::testing::TempDir()) + "/lab_7.5x5.yaml";
+  ASSERT_TRUE(window_->saveTo(path, true));
+  EXPECT_TRUE(sameField(readFieldYaml(path.toStdString()), makeField(expected), 1e-12));
 }
 
 }  // namespace

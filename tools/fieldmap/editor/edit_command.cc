@@ -11,7 +11,8 @@ namespace houghloc::fieldmap {
 
 void addEditCommand(CLI::App& app, int& exit_code) {
   struct Options {
-    std::string file, standard = "spl", screenshot;
+    std::string file, standard = "spl", screenshot, check;
+    int frame = 0;
   };
   auto options = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
@@ -24,6 +25,11 @@ void addEditCommand(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--screenshot", options->screenshot,
                   "render the window to this PNG and exit (for docs and tests)");
+  cmd->add_option("--check", options->check,
+                  "recorded folder to check the map against (its line points at the frame's pose)");
+  cmd->add_option("--frame", options->frame, "frame of --check to show")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cmd->callback([options, &exit_code] {
     // Load before Qt starts, so a bad file fails with the file and key like the other commands.
     EditorDocument doc =
@@ -33,6 +39,8 @@ void addEditCommand(CLI::App& app, int& exit_code) {
     static char* qt_argv[] = {qt_name, nullptr};
     QApplication qt(qt_argc, qt_argv);
     EditorWindow window(std::move(doc), QString::fromStdString(options->file));
+    if (!options->check.empty())
+      window.openCheck(QString::fromStdString(options->check), options->frame);
     window.show();
     if (options->screenshot.empty()) {
       exit_code = qt.exec();

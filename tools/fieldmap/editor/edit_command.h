@@ -4,7 +4,8 @@
 
 namespace houghloc::fieldmap {
 
-/// Registers `edit [FILE] [--standard NAME] [--screenshot PNG]`: opens the Qt editor on a YAML
+/// Registers `edit [FILE] [--standard NAME] [--check FOLDER [--frame N]] [--screenshot PNG]`:
+/// opens the Qt editor on a YAML
 /// map or field_dimensions.json, or on a standard field (default spl).
 void addEditCommand(CLI::App& app, int& exit_code);
 

@@ -77,14 +77,24 @@ void EditorWindow::setDocument(const EditorDocument& doc) {
   refresh();
 }
 
+void EditorWindow::openCheck(const QString& folder, int frame) {
+  check_->openRecording(folder, frame);
+  check_dock_->raise();
+}
+
 void EditorWindow::select(std::vector<FeatureId> features) {
   selection_ = std::move(features);
-  view_->showDocument(doc_, selection_);
+  redraw();
   refreshProperties();
 }
 
-void EditorWindow::refresh() {
+void EditorWindow::redraw() {
   view_->showDocument(doc_, selection_);
+  check_->update(doc_);
+}
+
+void EditorWindow::refresh() {
+  redraw();
   dimensions_->setValues(dimensionValues(dimensionsOf(doc_)));
   issues_->clear();
   issue_features_.clear();

@@ -5,12 +5,14 @@
 #include <QUndoStack>
 #include <vector>
 
+#include "tools/fieldmap/editor/check_panel.h"
 #include "tools/fieldmap/editor/field_view.h"
 #include "tools/fieldmap/editor/number_form.h"
 #include "tools/fieldmap/editor_model/snapping.h"
 #include "tools/fieldmap/editor_model/symmetry.h"
 
 class QLabel;
+class QDockWidget;
 
 namespace houghloc::fieldmap {
 
@@ -25,6 +27,9 @@ class EditorWindow : public QMainWindow {
   FieldView* view() const { return view_; }
   QUndoStack* undoStack() const { return undo_; }
   QListWidget* validationList() const { return issues_; }
+  CheckPanel* checkPanel() const { return check_; }
+  /// Opens a recorded folder in the check panel and brings the panel to the front.
+  void openCheck(const QString& folder, int frame);
 
   /// Applies an edit through the undo stack (every change to the map goes here).
   void apply(const Edit& edit);
@@ -43,6 +48,7 @@ class EditorWindow : public QMainWindow {
   void buildMenus();
   void buildPanels();
   void refresh();
+  void redraw();  ///< the view and the check overlay
   void refreshProperties();
   bool save();
   bool saveAs();
@@ -62,6 +68,8 @@ class EditorWindow : public QMainWindow {
   NumberForm* dimensions_ = nullptr;
   NumberForm* properties_ = nullptr;
   QLabel* property_title_ = nullptr;
+  CheckPanel* check_ = nullptr;
+  QDockWidget* check_dock_ = nullptr;
 };
 
 }  // namespace houghloc::fieldmap

@@ -91,6 +91,18 @@ void EditorWindow::buildPanels() {
   props_dock->setWidget(props_widget);
   addDockWidget(Qt::RightDockWidgetArea, props_dock);
 
+  check_ = new CheckPanel(view_);
+  check_->on_feature_clicked = [this](FeatureId f) { select({f}); };
+  view_->on_pose_dragged = [this](Eigen::Vector2d d) { check_->nudgePose(d, 0.0); };
+  view_->on_pose_turned = [this](double rad) { check_->nudgePose(Eigen::Vector2d::Zero(), rad); };
+  auto* check_dock = new QDockWidget("Check against a frame", this);
+  check_dock->setObjectName("check");
+  check_dock->setWidget(check_);
+  addDockWidget(Qt::LeftDockWidgetArea, check_dock);
+  tabifyDockWidget(dims_dock, check_dock);
+  dims_dock->raise();
+  check_dock_ = check_dock;
+
   issues_ = new QListWidget;
   connect(issues_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
     const int row = issues_->row(item);

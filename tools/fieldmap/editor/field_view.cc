@@ -193,6 +193,10 @@ void FieldView::mousePressEvent(QMouseEvent* event) {
   }
   if (event->button() != Qt::LeftButton) return;
   const QPointF scene_pos = mapToScene(event->pos());
+  if ((event->modifiers() & Qt::ShiftModifier) && on_pose_dragged) {
+    drag_ = Drag{std::nullopt, Handle::kCenter, scene_pos, nullptr, false, true};
+    return;
+  }
   QGraphicsItem* hit = nullptr;
   for (QGraphicsItem* item : items(QRect(event->pos() - QPoint(4, 4), QSize(9, 9)))) {
     if (!item->data(kFeatureKey).isValid()) continue;
@@ -232,6 +236,12 @@ void FieldView::mouseMoveEvent(QMouseEvent* event) {
   }
   if (!drag_) return;
   drag_->moved = true;
+  if (drag_->pose) {  // live: the points follow the cursor
+    const QPointF scene_pos = mapToScene(event->pos());
+    on_pose_dragged(toField(scene_pos) - toField(drag_->start_scene));
+    drag_->start_scene = scene_pos;
+    return;
+  }
   if (drag_->feature && drag_->item) {
     Eigen::Vector2d p = toField(mapToScene(event->pos()));
     if (snap) p = snap(*drag_->feature, drag_->handle, p);
@@ -251,7 +261,9 @@ void FieldView::mouseReleaseEvent(QMouseEvent* event) {
   const QPoint press = mapFromScene(drag.start_scene);
   if (!drag.moved && (event->pos() - press).manhattanLength() < 3) return;
   const QPointF scene_pos = mapToScene(event->pos());
-  if (drag.feature) {
+  if (drag.pose) {
+    on_pose_dragged(toField(scene_pos) - toField(drag.start_scene));
+  } else if (drag.feature) {
     Eigen::Vector2d p = toField(scene_pos);
     if (snap) p = snap(*drag.feature, drag.handle, p);
     if (on_handle_dragged) on_handle_dragged(*drag.feature, drag.handle, p);
@@ -261,6 +273,10 @@ void FieldView::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void FieldView::wheelEvent(QWheelEvent* event) {
+  if ((event->modifiers() & Qt::ShiftModifier) && on_pose_turned) {
+    on_pose_turned(event->angleDelta().y() / 120.0 * M_PI / 180.0);  // 1 deg per wheel step
+    return;
+  }
   const double factor = std::pow(1.0015, event->angleDelta().y());
   scale(factor, factor);  // AnchorUnderMouse keeps the point under the cursor in place
 }

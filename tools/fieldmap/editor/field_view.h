@@ -32,6 +32,9 @@ class FieldView : public QGraphicsView {
   std::function<void(std::vector<FeatureId>)> on_selection;
   std::function<void(FeatureId, Handle, Eigen::Vector2d)> on_handle_dragged;
   std::function<void(Eigen::Vector2d)> on_selection_moved;
+  /// Shift+drag: the check pose moves by this field-frame translation; Shift+wheel turns it.
+  std::function<void(Eigen::Vector2d)> on_pose_dragged;
+  std::function<void(double)> on_pose_turned;
   /// Where a dragged handle lands (snapping); the identity when unset.
   std::function<Eigen::Vector2d(FeatureId, Handle, Eigen::Vector2d)> snap;
 
@@ -49,6 +52,7 @@ class FieldView : public QGraphicsView {
     QPointF start_scene;
     QGraphicsItem* item = nullptr;  ///< the handle being moved, for feedback
     bool moved = false;
+    bool pose = false;  ///< Shift: drags the check pose, not the map
   };
   void addFeatureItems(const EditorDocument& doc, const FeatureId& f, bool selected);
   void addHandles(const EditorDocument& doc, const FeatureId& f);
