@@ -222,6 +222,25 @@ TEST(DocumentIo, YamlRoundTripIsExact) {
   saveDocument(doc, path);
   const EditorDocument back = loadDocument(path);
   EXPECT_TRUE(sameField(back.field(), doc.field(), 0.0));
+  EXPECT_FALSE(back.rules().has_value());  // the extra arc is no rules layout
+  std::remove(path.c_str());
+}
+
+TEST(DocumentIo, SavedRulesLayoutGetsItsDimensionsBack) {
+  for (const std::string& name : standardFieldNames()) {
+    const std::string path = tempPath(name + ".yaml");
+    saveDocument(standardDocument(name), path);
+    const EditorDocument back = loadDocument(path);
+    ASSERT_TRUE(back.isRulesShaped()) << name;
+    EXPECT_NEAR(back.rules()->penalty_area_length,
+                standardFieldDimensions(name).penalty_area_length, 1e-12);
+    EXPECT_NEAR(back.rules()->corner_arc_radius, standardFieldDimensions(name).corner_arc_radius,
+                1e-12);
+    std::remove(path.c_str());
+  }
+  const std::string path = tempPath("small.yaml");
+  saveDocument(EditorDocument(makeField(smallField())), path);
+  EXPECT_NEAR(loadDocument(path).rules()->goal_area_length, 0.5, 1e-12);
   std::remove(path.c_str());
 }
 

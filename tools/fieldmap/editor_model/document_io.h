@@ -7,8 +7,9 @@
 namespace houghloc::fieldmap {
 
 /// Opens a map: a field_dimensions.json (".json", SPL import rules, the document keeps its
-/// dimensions so it can be exported again) or a YAML map (anything else). Throws FormatError
-/// naming the file and key.
+/// dimensions so it can be exported again) or a YAML map (anything else; when its lines are exactly
+/// a rules layout, as after saving a generated field, the document gets those dimensions back).
+/// Throws FormatError naming the file and key.
 EditorDocument loadDocument(const std::string& path);
 
 /// A standard field by name (spl, spl2019, kid, adult, msl), with its dimensions.
