@@ -14,6 +14,7 @@
 #include "field_models/field_yaml.h"
 #include "tools/fieldmap/editor/editor_window.h"
 #include "tools/fieldmap/editor_model/document_io.h"
+#include "tools/fieldmap/editor_model/residuals.h"
 
 namespace houghloc::fieldmap {
 namespace {
@@ -100,6 +101,20 @@ TEST_F(EditorWidget, MoveSelectionAndValidationSelectsFeature) {
   ASSERT_EQ(window_->selection().size(), 1u);
   EXPECT_EQ(window_->selection()[0], mark);
   window_->undoStack()->setClean();  // no unsaved-changes prompt at teardown
+}
+
+TEST_F(EditorWidget, CheckPanelResidualsFollowThePose) {
+  // The rendered penalty-area view of frame_check_test, checked in the window at its true pose.
+  window_->openCheck(HOUGHLOC_CHECK_FIXTURE, 1);
+  const ResidualReport& report = window_->checkPanel()->report();
+  ASSERT_GT(report.overall.count, 50);
+  EXPECT_LT(report.overall.mean_m, 0.02);
+  EXPECT_FALSE(window_->view()->overlay()->childItems().isEmpty());
+  // Shift+drag the pose 0.3 m along +y: the points leave the lines along x.
+  QTest::mousePress(viewport(), Qt::LeftButton, Qt::ShiftModifier, pixel(0.0, 0.0));
+  QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ShiftModifier, pixel(0.0, 0.3));
+  EXPECT_GT(window_->checkPanel()->report().overall.mean_m, 0.05);
+  EXPECT_TRUE(window_->undoStack()->isClean());  // the pose is no map edit
 }
 
 /// Types a value into the dimensions panel's spin box with this label, as a user would.
