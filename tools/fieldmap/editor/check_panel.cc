@@ -74,7 +74,13 @@ CheckPanel::CheckPanel(FieldView* view, QWidget* parent)
 }
 
 void CheckPanel::openRecording(const QString& folder, int frame) {
-  source_ = std::make_unique<FrameSource>(folder.toStdString());
+  auto source = std::make_unique<FrameSource>(folder.toStdString());
+  if (frame < 0 || frame >= source->frameCount()) {
+    throw RecordingError(source->recording().folder + "/frames.csv: no frame " +
+                         std::to_string(frame) + " (the folder has " +
+                         std::to_string(source->frameCount()) + ")");
+  }
+  source_ = std::move(source);
   frame_box_->blockSignals(true);
   frame_box_->setRange(0, std::max(0, source_->frameCount() - 1));
   frame_box_->setValue(frame);

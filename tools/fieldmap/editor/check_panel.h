@@ -25,7 +25,8 @@ class CheckPanel : public QWidget {
  public:
   CheckPanel(FieldView* view, QWidget* parent = nullptr);
 
-  /// Opens a recorded folder and shows `frame`; throws RecordingError.
+  /// Opens a recorded folder and shows `frame`; throws RecordingError (also for a frame the
+  /// folder does not have).
   void openRecording(const QString& folder, int frame = 0);
   /// Redraws the points and residuals for this map (after every edit).
   void update(const EditorDocument& doc);
