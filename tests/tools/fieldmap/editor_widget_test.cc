@@ -7,6 +7,7 @@
 #include <QFormLayout>
 #include <QGraphicsItemGroup>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QtTest/QTest>
 #include <cstdio>
@@ -138,6 +139,10 @@ void typeDimension(QWidget* window, const QString& label, const QString& value) 
 
 TEST_F(EditorWidget, DimensionsPanelBuildsSmallField) {
   // The lab field of docs/editor.md: 7.5 x 5 m with a 0.5 m goal area, SPL otherwise.
+  auto* name = window_->findChild<QLineEdit*>("map_name");
+  ASSERT_NE(name, nullptr);
+  name->selectAll();
+  QTest::keyClicks(name, "lab 7.5 x 5");
   typeDimension(window_.get(), "length (m)", "7.5");
   typeDimension(window_.get(), "width (m)", "5");
   typeDimension(window_.get(), "goal area length (m)", "0.5");
@@ -148,6 +153,7 @@ TEST_F(EditorWidget, DimensionsPanelBuildsSmallField) {
   QTest::mouseClick(regenerate, Qt::LeftButton);
 
   FieldDimensions expected = standardFieldDimensions("spl");
+  expected.name = "lab 7.5 x 5";
   expected.length = 7.5;
   expected.width = 5.0;
   expected.goal_area_length = 0.5;

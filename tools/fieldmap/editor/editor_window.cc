@@ -4,6 +4,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
@@ -96,6 +97,7 @@ void EditorWindow::redraw() {
 void EditorWindow::refresh() {
   redraw();
   dimensions_->setValues(dimensionValues(dimensionsOf(doc_)));
+  name_->setText(QString::fromStdString(doc_.field().name));
   issues_->clear();
   issue_features_.clear();
   const std::vector<DocumentIssue> issues = validateDocument(doc_);

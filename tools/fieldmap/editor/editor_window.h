@@ -12,6 +12,7 @@
 #include "tools/fieldmap/editor_model/symmetry.h"
 
 class QLabel;
+class QLineEdit;
 class QDockWidget;
 
 namespace houghloc::fieldmap {
@@ -65,6 +66,7 @@ class EditorWindow : public QMainWindow {
   QUndoStack* undo_;
   QListWidget* issues_ = nullptr;
   std::vector<FeatureId> issue_features_;  ///< per row of issues_; id -1 when map-wide
+  QLineEdit* name_ = nullptr;              ///< the map's name (Dimensions panel)
   NumberForm* dimensions_ = nullptr;
   NumberForm* properties_ = nullptr;
   QLabel* property_title_ = nullptr;

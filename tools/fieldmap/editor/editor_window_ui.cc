@@ -1,6 +1,7 @@
 // EditorWindow's menus and dock panels.
 #include <QDockWidget>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -62,9 +63,21 @@ void EditorWindow::buildPanels() {
   auto* dims_layout = new QVBoxLayout(dims_widget);
   dimensions_ = new NumberForm;
   dimensions_->setFields(dimensionLabels(), 3);
+  // The name is part of the map, not of the layout: renaming is its own undoable edit.
+  name_ = new QLineEdit;
+  name_->setObjectName("map_name");
+  dimensions_->layout()->insertRow(0, "name", name_);
+  connect(name_, &QLineEdit::editingFinished, this, [this] {
+    if (name_->text().toStdString() == doc_.field().name) return;
+    FieldModel header = doc_.field();
+    header.name = name_->text().toStdString();
+    apply(setHeader(doc_, header));
+  });
   auto* regenerate_button = new QPushButton("Regenerate rules layout");
   connect(regenerate_button, &QPushButton::clicked, this, [this] {
-    apply(regenerate(doc_, dimensionsFrom(dimensionsOf(doc_), dimensions_->values())));
+    FieldDimensions dims = dimensionsFrom(dimensionsOf(doc_), dimensions_->values());
+    dims.name = name_->text().toStdString();
+    apply(regenerate(doc_, dims));
   });
   dims_layout->addWidget(dimensions_);
   dims_layout->addWidget(regenerate_button);
