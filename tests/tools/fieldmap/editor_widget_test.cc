@@ -8,7 +8,9 @@
 #include <QGraphicsItemGroup>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPushButton>
+#include <QTimer>
 #include <QtTest/QTest>
 #include <cstdio>
 #include <memory>
@@ -118,6 +120,34 @@ TEST_F(EditorWidget, CheckPanelResidualsFollowThePose) {
   QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ShiftModifier, pixel(0.3, 0.0));
   EXPECT_GT(window_->checkPanel()->report().overall.mean_m, 0.15);
   EXPECT_TRUE(window_->undoStack()->isClean());  // the pose is no map edit
+}
+
+/// Answers the next modal message box with `button` once it is open.
+void answerPrompt(QMessageBox::StandardButton button, QString* text) {
+  QTimer::singleShot(0, [button, text] {
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    if (!box) return;
+    *text = box->text();
+    box->button(button)->click();
+  });
+}
+
+TEST_F(EditorWidget, UnsavedChangesPromptOnQuit) {
+  window_->apply(
+      deleteFeatures(window_->document(), {window_->document().idAt(EditorKind::kMark, 0)}));
+  QString text;
+  answerPrompt(QMessageBox::Cancel, &text);
+  EXPECT_FALSE(window_->close());  // cancelled: stays open
+  EXPECT_TRUE(text.contains("unsaved"));
+  EXPECT_TRUE(window_->isVisible());
+  text.clear();
+  answerPrompt(QMessageBox::Discard, &text);
+  EXPECT_TRUE(window_->close());
+  EXPECT_TRUE(text.contains("unsaved"));
+  // A saved (clean) map closes without asking.
+  window_ = std::make_unique<EditorWindow>(standardDocument("spl"));
+  window_->show();
+  EXPECT_TRUE(window_->close());
 }
 
 /// Types a value into the dimensions panel's spin box with this label, as a user would.
