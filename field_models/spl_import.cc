@@ -215,6 +215,23 @@ FieldDimensions readSplFieldDimensions(const std::string& path) {
   return parseSplFieldDimensions(text.str(), path);
 }
 
+std::string splFieldDimensionsToJson(const FieldDimensions& dims) {
+  Json root = {{"field", Json::object()}, {"goal", Json::object()}};
+  const bool goal_area = dims.goal_area_length > 0.0 || dims.goal_area_width > 0.0;
+  auto write = [&](const char* section, const std::vector<KeyRule>& rules) {
+    for (const KeyRule& rule : rules) {
+      if (rule.optional && !goal_area) continue;
+      root[section][rule.key] = dims.*rule.member;
+    }
+  };
+  write("field", kFieldRules);
+  write("goal", kGoalRules);
+  std::string text = root.dump(2) + "\n";
+  // The same rules as reading: an export that would not load again is an error, not a file.
+  parseSplFieldDimensions(text, "field_dimensions.json");
+  return text;
+}
+
 FieldModel importSplField(const std::string& path) {
   return makeField(readSplFieldDimensions(path));
 }

@@ -21,6 +21,11 @@ FieldDimensions parseSplFieldDimensions(const std::string& json_text,
 /// Reads and parses a field_dimensions.json file.
 FieldDimensions readSplFieldDimensions(const std::string& path);
 
+/// The dimensions as field_dimensions.json text with the keys of the table above (the goal-area
+/// keys left out when goal_area_length is 0). Throws FormatError, naming the key, when a value is
+/// outside the table's range (e.g. a line width other than 0.05), since the file would not load.
+std::string splFieldDimensionsToJson(const FieldDimensions& dims);
+
 /// makeField(readSplFieldDimensions(path)).
 FieldModel importSplField(const std::string& path);
 

@@ -11,6 +11,7 @@ PACKAGES=(
   liblcm-dev liblcm-bin liblcm-java libglib2.0-dev openjdk-17-jdk-headless
   googletest libgtest-dev libbenchmark-dev
   iproute2 util-linux
+  qtbase5-dev xvfb
 )
 
 missing=()
@@ -30,7 +31,7 @@ fi
 
 BUILD_DIR=${HOUGHLOC_BUILD_DIR:-build}
 JOBS=${HOUGHLOC_JOBS:-$(nproc)}
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DHOUGHLOC_BUILD_EDITOR=ON "$@" >/dev/null
 LOG="$BUILD_DIR/build.log"
 if ! cmake --build "$BUILD_DIR" -j "$JOBS" >"$LOG" 2>&1; then
   grep -E -B2 -A8 "error|Error" "$LOG" | head -n 200 >&2

@@ -6,4 +6,6 @@ cd "$(dirname "$0")/.."
 tools/setup.sh
 BUILD_DIR=${HOUGHLOC_BUILD_DIR:-build}
 cd "$BUILD_DIR"
+# Qt widget tests draw offscreen (no display needed).
+export QT_QPA_PLATFORM=${QT_QPA_PLATFORM:-offscreen}
 ctest --output-on-failure -j "${HOUGHLOC_JOBS:-$(nproc)}" "$@"

@@ -5,6 +5,9 @@
 
 #include "field_models/field_validation.h"
 #include "tools/fieldmap/commands.h"
+#ifdef HOUGHLOC_WITH_EDITOR
+#include "tools/fieldmap/editor/edit_command.h"
+#endif
 
 namespace houghloc::fieldmap {
 
@@ -37,6 +40,9 @@ int main(int argc, char** argv) {
   addImportSplCommand(app, exit_code);
   addValidateCommand(app, exit_code);
   addRenderCommand(app, exit_code);
+#ifdef HOUGHLOC_WITH_EDITOR
+  addEditCommand(app, exit_code);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
