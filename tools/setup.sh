@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(
   build-essential cmake pkg-config
-  libeigen3-dev libopencv-dev nlohmann-json3-dev libcli11-dev
+  libeigen3-dev libopencv-dev libopencv-contrib-dev nlohmann-json3-dev libcli11-dev
   liblcm-dev liblcm-bin libglib2.0-dev
   googletest libgtest-dev libbenchmark-dev
   iproute2 util-linux
