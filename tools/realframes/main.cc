@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <set>
 
+#include "tools/offline/offline_config.h"
 #include "tools/realframes/real_summary.h"
 #include "tools/recording/recording.h"
 
@@ -19,13 +20,16 @@ int main(int argc, char** argv) {
   std::vector<std::string> only;
   app.add_option("data", data_dir, "real-frame tree with index.csv (e.g. ../shared/data/real)")
       ->required();
+  std::string config_file;
   app.add_option("--folder", only, "run only these folders (repeatable)");
+  app.add_option("--config", config_file, "config YAML (its vision: section), as houghloc-offline");
   CLI11_PARSE(app, argc, argv);
   try {
     if (!std::filesystem::is_directory(data_dir)) {
       std::fprintf(stderr, "houghloc-real-report: %s: not a folder\n", data_dir.c_str());
       return 2;
     }
+    const VisionConfig config = loadOfflineConfig(config_file).vision;
     const std::vector<RealFrameLabel> labels = readRealIndex(data_dir);
     std::vector<std::string> folders;
     for (const RealFrameLabel& l : labels) {
@@ -39,7 +43,7 @@ int main(int argc, char** argv) {
       if (!wanted.empty() && !wanted.count(folder)) continue;
       std::fprintf(stderr, "houghloc-real-report: %s\n", folder.c_str());
       const RealFolderSummary s =
-          summarizeRealFolder(data_dir, folder, runRealFolder(data_dir, labels, folder));
+          summarizeRealFolder(data_dir, folder, runRealFolder(data_dir, labels, folder, config));
       printRealSummary(s);
       yes += s.yes, empty += s.houghloc.yes_empty, base_empty += s.baseline.yes_empty;
       no_points += s.houghloc.no_points;
