@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(
   build-essential cmake pkg-config
-  libeigen3-dev libopencv-dev nlohmann-json3-dev libcli11-dev
+  libeigen3-dev libopencv-dev libopencv-contrib-dev nlohmann-json3-dev libcli11-dev
   liblcm-dev liblcm-bin liblcm-java libglib2.0-dev openjdk-17-jdk-headless
   googletest libgtest-dev libbenchmark-dev
   iproute2 util-linux

@@ -9,6 +9,7 @@ namespace {
 struct Sample {
   float r, g;
   int luma;
+  bool bottom;  ///< in the bottom band of the image
 };
 
 float median(std::vector<float> values) {
@@ -18,10 +19,13 @@ float median(std::vector<float> values) {
   return *mid;
 }
 
+float greyDistance(cv::Point2f c) { return std::hypot(c.x - 1.f / 3.f, c.y - 1.f / 3.f); }
+
 std::vector<Sample> collectSamples(const cv::Mat& bgr, const std::vector<int>& start_rows,
                                    const FieldColorConfig& config) {
   std::vector<Sample> samples;
   const int step = std::max(1, config.sample_step_px);
+  const int bottom_row = bgr.rows - static_cast<int>(config.bottom_band_share * bgr.rows);
   for (int u = step / 2; u < bgr.cols; u += step) {
     const int top = std::max(0, start_rows[static_cast<size_t>(u)]);
     for (int v = bgr.rows - 1 - step / 2; v >= top; v -= step) {
@@ -29,48 +33,105 @@ std::vector<Sample> collectSamples(const cv::Mat& bgr, const std::vector<int>& s
       const int luma = FieldColor::luma(p);
       if (luma < config.min_luma) continue;
       const float sum = static_cast<float>(p[0] + p[1] + p[2]);
-      samples.push_back({p[2] / sum, p[1] / sum, luma});
+      samples.push_back({p[2] / sum, p[1] / sum, luma, v >= bottom_row});
     }
   }
   return samples;
 }
 
-/// Peak of the 3x3-smoothed chromaticity histogram; green bins (g clearly above r and b) win when
-/// they hold a fair share, since a robot close to the camera can outnumber the turf.
-cv::Point2f histogramPeak(const std::vector<Sample>& samples, int bins, double min_share) {
-  std::vector<int> hist(static_cast<size_t>(bins * bins), 0);
+/// Local maxima of the 3x3-smoothed chromaticity histogram, largest first.
+std::vector<cv::Point2f> histogramPeaks(const std::vector<Sample>& samples, int bins) {
+  std::vector<int> hist(static_cast<size_t>(bins * bins), 0), smooth(hist.size(), 0);
   const auto bin = [bins](float x) { return std::clamp(static_cast<int>(x * bins), 0, bins - 1); };
   for (const Sample& s : samples) ++hist[static_cast<size_t>(bin(s.g) * bins + bin(s.r))];
-  int best_any = -1, best_green = -1;
-  cv::Point best_any_at, best_green_at;
+  const auto at = [bins](std::vector<int>& h, int gi, int ri) -> int& {
+    return h[static_cast<size_t>(gi * bins + ri)];
+  };
   for (int gi = 1; gi + 1 < bins; ++gi) {
     for (int ri = 1; ri + 1 < bins; ++ri) {
-      int sum = 0;
       for (int dg = -1; dg <= 1; ++dg) {
-        for (int dr = -1; dr <= 1; ++dr)
-          sum += hist[static_cast<size_t>((gi + dg) * bins + ri + dr)];
+        for (int dr = -1; dr <= 1; ++dr) at(smooth, gi, ri) += at(hist, gi + dg, ri + dr);
       }
-      const float r = (ri + 0.5f) / bins, g = (gi + 0.5f) / bins;
-      if (sum > best_any) best_any = sum, best_any_at = {ri, gi};
-      // Clearly green: a grey wall with a faint green tint must not pass for turf.
-      constexpr float kGreenMargin = 0.04f;
-      if (g - std::max(r, 1.f - r - g) > kGreenMargin && sum > best_green)
-        best_green = sum, best_green_at = {ri, gi};
     }
   }
-  const bool green_ok = best_green > 0 && best_green >= min_share * samples.size();
-  const cv::Point at = green_ok ? best_green_at : best_any_at;
-  return {(at.x + 0.5f) / bins, (at.y + 0.5f) / bins};
+  std::vector<std::pair<int, cv::Point2f>> peaks;
+  for (int gi = 1; gi + 1 < bins; ++gi) {
+    for (int ri = 1; ri + 1 < bins; ++ri) {
+      const int value = at(smooth, gi, ri);
+      bool is_max = value > 0;
+      for (int dg = -1; dg <= 1 && is_max; ++dg) {
+        for (int dr = -1; dr <= 1 && is_max; ++dr) {
+          const int other = at(smooth, gi + dg, ri + dr);
+          // Ties go to the first bin in scan order, so a plateau gives one peak.
+          if (other > value || (other == value && (dg < 0 || (dg == 0 && dr < 0)))) {
+            is_max = (dg == 0 && dr == 0);
+          }
+        }
+      }
+      if (is_max) peaks.push_back({value, {(ri + 0.5f) / bins, (gi + 0.5f) / bins}});
+    }
+  }
+  std::sort(peaks.begin(), peaks.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<cv::Point2f> out;
+  for (const auto& peak : peaks) out.push_back(peak.second);
+  return out;
+}
+
+/// How much the image says a chromaticity cluster is the turf: its share of the samples, how
+/// much of the image's bottom band it fills (a standing robot sees the field below it; walls,
+/// floors and people beyond the border do not reach the bottom) and how clearly it is coloured
+/// rather than grey (walls, floors and ceilings are near grey; turf is green to teal).
+double turfEvidence(const std::vector<Sample>& samples, cv::Point2f centre,
+                    const FieldColorConfig& config) {
+  const float grey = greyDistance(centre);
+  // Turf is green to teal: green above red. Yellow, red and brown (wood, skin) are not turf.
+  if (grey < config.min_grey_distance || centre.y < centre.x + config.min_green_over_red) return 0;
+  int near = 0, near_bottom = 0, bottom = 0;
+  for (const Sample& s : samples) {
+    const bool in = std::hypot(s.r - centre.x, s.g - centre.y) < config.max_chroma_radius;
+    near += in;
+    bottom += s.bottom;
+    near_bottom += in && s.bottom;
+  }
+  const double share = static_cast<double>(near) / samples.size();
+  const double bottom_share = bottom > 0 ? static_cast<double>(near_bottom) / bottom : 0.0;
+  const double colourful = std::min(1.0, grey / config.clear_grey_distance);
+  return share * (config.bottom_weight_floor + bottom_share) * colourful;
+}
+
+/// The cluster with the most turf evidence among the largest histogram peaks and the previous
+/// frame's field colour (when given). Falls back to the largest peak (then judged invalid).
+cv::Point2f turfPeak(const std::vector<Sample>& samples, const FieldColorConfig& config,
+                     const FieldColor* previous) {
+  std::vector<cv::Point2f> peaks = histogramPeaks(samples, config.histogram_bins);
+  if (peaks.empty()) return {1.f / 3.f, 1.f / 3.f};
+  if (static_cast<int>(peaks.size()) > config.max_candidates) {
+    peaks.resize(static_cast<size_t>(config.max_candidates));
+  }
+  cv::Point2f best = peaks.front();
+  double best_score = 0.0;
+  for (const cv::Point2f& peak : peaks) {
+    const double score = turfEvidence(samples, peak, config);
+    if (score > best_score) best_score = score, best = peak;
+  }
+  if (previous && previous->valid) {
+    // The previous estimate wins only where this frame still holds it (no wrong estimate sticks).
+    const cv::Point2f kept(previous->r, previous->g);
+    const double score = config.memory_bonus * turfEvidence(samples, kept, config);
+    if (score > best_score) best = kept;
+  }
+  return best;
 }
 
 }  // namespace
 
 FieldColor estimateFieldColor(const cv::Mat& bgr, const std::vector<int>& start_rows,
-                              const FieldColorConfig& config) {
+                              const FieldColorConfig& config, const FieldColor* previous) {
   FieldColor color;
   const std::vector<Sample> samples = collectSamples(bgr, start_rows, config);
   if (samples.size() < 10) return color;
-  cv::Point2f centre = histogramPeak(samples, config.histogram_bins, config.min_field_share);
+  cv::Point2f centre = turfPeak(samples, config, previous);
 
   // Refine: mean of the samples near the peak, then a robust spread around it.
   float radius = static_cast<float>(config.max_chroma_radius);
@@ -86,9 +147,11 @@ FieldColor estimateFieldColor(const cv::Mat& bgr, const std::vector<int>& start_
               static_cast<float>(sum_g / distances.size())};
     // The median distance of a 2-D Gaussian is 1.177 sigma.
     const float sigma = median(distances) / 1.177f;
+    // A desaturated turf (dim or tinted light) keeps grey (white paint) outside its radius.
+    const float limit = std::min(static_cast<float>(config.max_chroma_radius),
+                                 static_cast<float>(config.max_grey_share) * greyDistance(centre));
     radius = std::clamp(static_cast<float>(config.radius_sigmas) * sigma,
-                        static_cast<float>(config.min_chroma_radius),
-                        static_cast<float>(config.max_chroma_radius));
+                        std::min(static_cast<float>(config.min_chroma_radius), limit), limit);
   }
 
   std::vector<float> lumas;
@@ -106,9 +169,11 @@ FieldColor estimateFieldColor(const cv::Mat& bgr, const std::vector<int>& start_
   color.luma_sigma = 1.4826f * median(deviations);
   color.min_luma = std::max(static_cast<float>(config.min_luma),
                             static_cast<float>(config.shadow_luma_ratio) * color.luma_median);
-  const float grey_distance = std::hypot(centre.x - 1.f / 3.f, centre.y - 1.f / 3.f);
+  const float grey_distance = greyDistance(centre);
   color.white_radius = static_cast<float>(config.white_chroma_ratio) * grey_distance;
-  color.valid = color.field_share >= config.min_field_share && grey_distance > radius;
+  color.valid = color.field_share >= config.min_field_share &&
+                grey_distance >= config.min_grey_distance && grey_distance > radius &&
+                centre.y >= centre.x + config.min_green_over_red;
   return color;
 }
 

@@ -18,6 +18,19 @@ struct FieldColorConfig {
                                      ///< share of the field colour's distance to grey
   double chroma_noise = 10.0;  ///< sensor noise allowance, channel units (0-255): dark pixels'
                                ///< chromaticity is noisier, so they get more room
+  // Which chromaticity cluster is the turf (turfEvidence in field_color.cc): no hue thresholds
+  // per venue, but what every field shows.
+  int max_candidates = 6;             ///< largest histogram peaks compared
+  double bottom_band_share = 0.15;    ///< image rows (share of the height) at the bottom where a
+                                      ///< standing robot sees the field
+  double bottom_weight_floor = 0.25;  ///< evidence = share x (this + bottom share) x colourfulness
+  double clear_grey_distance = 0.1;   ///< chromaticity distance to grey counted as fully coloured
+  double min_grey_distance = 0.045;   ///< nearer to grey: no turf (grey walls, floors, carpets)
+  double min_green_over_red = 0.02;   ///< turf is green to teal: g at least r + this
+  double max_grey_share = 0.75;       ///< radius at most this share of the distance to grey
+  double memory_bonus = 1.5;          ///< the previous frame's colour wins when this times its
+                                      ///< evidence in the current frame beats the best peak
+  int memory_frames = 10;  ///< the last valid colour is offered for this many frames after it
 };
 
 /// The turf colour of one frame as normalised chromaticity (r, g) = (R, G) / (R + G + B), which
@@ -52,9 +65,13 @@ struct FieldColor {
 };
 
 /// Estimates the field colour from a sparse grid of samples below the given start rows (one per
-/// column, e.g. the horizon): the densest chromaticity cluster, preferring green ones, so no
-/// colour thresholds need tuning on a new field or under new light.
+/// column, e.g. the horizon): among the largest chromaticity clusters the one with the most
+/// turf evidence (share, filling the image bottom, coloured rather than grey), so no colour
+/// thresholds need tuning on a new field or under new light and a wall, floor or robot larger
+/// than the visible turf does not win. previous: the same camera's last valid estimate, kept
+/// when this frame still supports it (one odd frame does not lose the field).
 FieldColor estimateFieldColor(const cv::Mat& bgr, const std::vector<int>& start_rows,
-                              const FieldColorConfig& config = {});
+                              const FieldColorConfig& config = {},
+                              const FieldColor* previous = nullptr);
 
 }  // namespace houghloc

@@ -87,17 +87,28 @@ class SpotScanner {
     return false;
   }
 
+  void reject(const Scanline& line, int peak, SpotRejection reason,
+              int LineSpotStats::*counter) const {
+    if (!stats_) return;
+    ++(stats_->*counter);
+    if (config_.keep_rejected) {
+      stats_->rejected.push_back({{static_cast<float>(line.u0 + line.du * peak),
+                                   static_cast<float>(line.v0 + line.dv * peak)},
+                                  reason});
+    }
+  }
+
   void check(const Scanline& line, int before, int peak, int end) const {
     if (stats_) ++stats_->candidates;
     const int after = std::min(line.n - 1, end + 1);
     const int peak_luma = line.luma(peak);
     const int background_before = line.luma(before), background_after = line.luma(after);
     if (peak_luma - background_after < threshold_ || end >= line.n) {
-      if (stats_) ++stats_->not_green_bounded;
+      reject(line, peak, SpotRejection::kNotGreenBounded, &LineSpotStats::not_green_bounded);
       return;
     }
     if (!color_.isWhitish(line.at(peak))) {
-      if (stats_) ++stats_->not_white;
+      reject(line, peak, SpotRejection::kNotWhite, &LineSpotStats::not_white);
       return;
     }
     const float level = 0.5f * (peak_luma + 0.5f * (background_before + background_after));
@@ -107,25 +118,25 @@ class SpotScanner {
     const Eigen::Vector2f expected_xy = widths_.expectedPx(u, v);
     const float expected = line.dv != 0 ? expected_xy.y() : expected_xy.x();
     if (width > config_.max_width_ratio * expected + config_.width_tolerance_px) {
-      if (stats_) ++stats_->too_wide;
+      reject(line, peak, SpotRejection::kTooWide, &LineSpotStats::too_wide);
       return;
     }
     if (width < config_.min_width_ratio * expected - 1.f || expected <= 0.f) {
-      if (stats_) ++stats_->too_narrow;
+      reject(line, peak, SpotRejection::kTooNarrow, &LineSpotStats::too_narrow);
       return;
     }
     const float max_ramp = static_cast<float>(
         std::max(config_.max_edge_ramp_px, config_.max_edge_ramp_ratio * expected));
     if (edgeRamp(line, peak, -1, background_before) > max_ramp ||
         edgeRamp(line, peak, +1, background_after) > max_ramp) {
-      if (stats_) ++stats_->soft_edge;
+      reject(line, peak, SpotRejection::kSoftEdge, &LineSpotStats::soft_edge);
       return;
     }
     const int gap =
         config_.green_gap_px + static_cast<int>(config_.green_gap_width_share * expected + 0.5);
     if (!greenWithin(line, static_cast<int>(std::floor(left)), -1, gap + 1) ||
         !greenWithin(line, static_cast<int>(std::ceil(right)), +1, gap + 1)) {
-      if (stats_) ++stats_->not_green_bounded;
+      reject(line, peak, SpotRejection::kNotGreenBounded, &LineSpotStats::not_green_bounded);
       return;
     }
     spots_->push_back({{u, v}, width, expected, line.dv != 0});

@@ -27,6 +27,7 @@ struct LineSpotConfig {
   double max_edge_ramp_ratio = 0.2;    ///< ... and this share of the expected width is no paint
                                        ///< but the shading of a round white bar (the goal frame
                                        ///< lying on the ground)
+  bool keep_rejected = false;  ///< list rejected candidates in LineSpotStats (overlays; slower)
 };
 
 /// The centre of a bright run across a scanline that looks like a field line.
@@ -37,6 +38,15 @@ struct LineSpot {
   bool vertical_scan = false;
 };
 
+/// Why a candidate was rejected.
+enum class SpotRejection { kTooNarrow, kTooWide, kNotGreenBounded, kNotWhite, kSoftEdge };
+
+/// A rejected candidate where it lay, for overlays (LineSpotStats::rejected).
+struct RejectedSpot {
+  Eigen::Vector2f pixel = Eigen::Vector2f::Zero();  ///< (u, v) of the candidate's peak
+  SpotRejection reason = SpotRejection::kNotGreenBounded;
+};
+
 /// Why candidates were rejected (for diagnostics and tuning).
 struct LineSpotStats {
   int candidates = 0;
@@ -44,7 +54,8 @@ struct LineSpotStats {
   int too_wide = 0;
   int not_green_bounded = 0;
   int not_white = 0;
-  int soft_edge = 0;  ///< edges ramping too slowly for paint (round bars)
+  int soft_edge = 0;                   ///< edges ramping too slowly for paint (round bars)
+  std::vector<RejectedSpot> rejected;  ///< only with LineSpotConfig::keep_rejected
 };
 
 /// Scans the grid's rows and columns below the field boundary for bright, low-saturation runs with

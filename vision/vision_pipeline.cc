@@ -64,7 +64,15 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   result.horizon_rows = camera_.horizonRows();
   const std::vector<int> start_rows = scanStartRows(camera_, config_.horizon);
   // 2-3. Field colour from this frame, then the field boundary.
-  diag.field_color = estimateFieldColor(bgr, start_rows, config_.field_color);
+  const bool remembered = field_color_age_ <= config_.field_color.memory_frames;
+  diag.field_color = estimateFieldColor(bgr, start_rows, config_.field_color,
+                                        remembered ? &last_field_color_ : nullptr);
+  if (diag.field_color.valid) {
+    last_field_color_ = diag.field_color;
+    field_color_age_ = 0;
+  } else if (field_color_age_ <= config_.field_color.memory_frames) {
+    ++field_color_age_;
+  }
   result.boundary = detectFieldBoundary(bgr, diag.field_color, start_rows, config_.boundary);
   diag.time_color_ms = msSince(&step);
 

@@ -112,6 +112,8 @@ class VisionPipeline {
   int camera_id_ = 0;
   CameraModel camera_;
   std::shared_ptr<CameraPoseCorrector> corrector_;  ///< shared by sharePoseCorrection()
+  FieldColor last_field_color_;  ///< this camera's last valid field colour (frame memory)
+  int field_color_age_ = std::numeric_limits<int>::max() / 2;  ///< frames since it
 };
 
 }  // namespace houghloc

@@ -82,3 +82,53 @@ TEST(FieldColor, SamplesOnlyBelowTheStartRows) {
 
 }  // namespace
 }  // namespace houghloc
+
+namespace houghloc {
+namespace {
+
+/// A wall with a faint green tint fills the upper 65 % of the view, the turf the lower 35 %,
+/// its chromaticity spreading from yellowish far away (top) to saturated green near (bottom):
+/// no single histogram bin of the turf holds a tenth of the samples.
+cv::Mat wallOverSpreadTurf() {
+  cv::Mat image(240, 320, CV_8UC3);
+  cv::RNG rng(3);
+  for (int v = 0; v < image.rows; ++v) {
+    const double t = (v - 156) / 83.0;  // 0 at the turf's top, 1 at the bottom
+    const cv::Vec3d colour =
+        v < 156 ? cv::Vec3d(150, 170, 155) : cv::Vec3d(70 - 30 * t, 140 + 40 * t, 110 - 50 * t);
+    for (int u = 0; u < image.cols; ++u) {
+      for (int c = 0; c < 3; ++c) {
+        image.at<cv::Vec3b>(v, u)[c] = cv::saturate_cast<uchar>(colour[c] + rng.gaussian(3.0));
+      }
+    }
+  }
+  return image;
+}
+
+TEST(FieldColor, FindsTurfThatIsNotTheLargestRegion) {
+  const cv::Mat image = wallOverSpreadTurf();
+  const FieldColor color = estimateFieldColor(image, std::vector<int>(image.cols, 0));
+  ASSERT_TRUE(color.valid);
+  // The turf's spread (g 0.44-0.64) is wider than the largest radius: most of it is taken, the
+  // faintly green wall (g 0.36) none of it.
+  EXPECT_GT(color.g, 0.5f);
+  EXPECT_GT(share(image, color, {0, 160, 320, 80}, true), 0.6);
+  EXPECT_LT(share(image, color, {0, 0, 320, 150}, true), 0.01);
+}
+
+TEST(FieldColor, RemembersTheLastColourOnlyWhereTheFrameSupportsIt) {
+  const cv::Mat turf = turfImage({1, 1, 1});
+  const FieldColor previous = estimateFieldColor(turf, std::vector<int>(turf.cols, 0));
+  ASSERT_TRUE(previous.valid);
+  // A grey frame: the remembered turf colour has no support there and is not kept.
+  cv::Mat grey(120, 160, CV_8UC3, cv::Scalar(128, 128, 128));
+  cv::randn(grey, cv::Scalar::all(128), cv::Scalar::all(3));
+  EXPECT_FALSE(estimateFieldColor(grey, std::vector<int>(grey.cols, 0), {}, &previous).valid);
+  // The same turf frame with the memory gives the same colour.
+  const FieldColor again = estimateFieldColor(turf, std::vector<int>(turf.cols, 0), {}, &previous);
+  ASSERT_TRUE(again.valid);
+  EXPECT_NEAR(again.g, previous.g, 5e-3);  // the refinement starts elsewhere
+}
+
+}  // namespace
+}  // namespace houghloc

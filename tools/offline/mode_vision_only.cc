@@ -7,8 +7,10 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "tools/offline/correction_summary.h"
+#include "tools/offline/frame_diagnostics.h"
 #include "tools/offline/offline_output.h"
 #include "tools/offline/overlay.h"
+#include "tools/offline/overlay_diagnostics.h"
 #include "tools/offline/vision_metrics.h"
 #include "tools/offline/vision_stage.h"
 #include "tools/recording/csv.h"
@@ -58,11 +60,15 @@ void printSummary(const RunStats& s, const std::optional<VisionMetrics>& metrics
 
 }  // namespace
 
-int runVisionOnly(const OfflineContext& context) {
+int runVisionOnly(const OfflineContext& options_context) {
+  // Overlays show the rejected spot candidates too.
+  OfflineContext context = options_context;
+  context.vision_config.spots.keep_rejected = context.options.overlay;
   const Recording& rec = context.recording;
   const fs::path out(context.out_dir);
   CsvWriter points_csv((out / "points.csv").string(), {"t_us", "u", "v", "x_robot", "y_robot"});
   CsvWriter timing_csv((out / "timing.csv").string(), {"t_us", "vision_ms", "points"});
+  FrameDiagnostics diagnostics((out / "spots.csv").string());
   if (context.options.overlay) fs::create_directories(out / "overlay");
 
   const bool can_score = context.field && !rec.ground_truth.empty() && !rec.visible.empty();
@@ -88,6 +94,7 @@ int runVisionOnly(const OfflineContext& context) {
         stats.total_ms += result.diagnostics.time_total_ms;
         stats.max_ms = std::max(stats.max_ms, result.diagnostics.time_total_ms);
         stats.corrections.add(frame.camera_id, result.diagnostics);
+        diagnostics.add(frame, *v.intrinsics, result, context.vision_config.projection);
         for (const GroundPoint& p : result.ground.points) {
           points_csv.writeRow({points_csv.format(frame.t_us), points_csv.format(p.pixel.x()),
                                points_csv.format(p.pixel.y()), points_csv.format(p.p_robot.x()),
@@ -107,8 +114,9 @@ int runVisionOnly(const OfflineContext& context) {
         if (v.image) {
           const std::string name = fs::path(frame.image).stem().string() + ".png";
           const CameraModel camera(*v.intrinsics, result.robot_T_camera_used);
-          cv::imwrite((out / "overlay" / name).string(),
-                      drawVisionOverlay(*v.image, result, camera));
+          cv::Mat overlay = drawVisionOverlay(*v.image, result, camera);
+          drawFrameDiagnostics(&overlay, *v.image, result);
+          cv::imwrite((out / "overlay" / name).string(), overlay);
         }
         reportProgress(context, "vision", v.index - context.first_frame + 1, total);
       });
@@ -119,7 +127,9 @@ int runVisionOnly(const OfflineContext& context) {
     summary = metrics->result();
     writeMetricsSection(context.out_dir, "vision", toJson(*summary));
   }
+  diagnostics.close();
   printSummary(stats, summary, context.out_dir);
+  diagnostics.print();
   return 0;
 }
 

@@ -1,0 +1,59 @@
+// houghloc-real-report: runs the vision on the real robot frames (a folder tree with index.csv,
+// such as ../shared/data/real) and prints per folder the frames with lines but no point, points
+// per frame and the line-mask agreement, beside the naive column-scan baseline.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+
+#include "tools/offline/offline_config.h"
+#include "tools/realframes/real_summary.h"
+#include "tools/recording/recording.h"
+
+int main(int argc, char** argv) {
+  using namespace houghloc;
+  CLI::App app{
+      "Vision on the real frames: per folder, frames showing lines without a point (yes-empty), "
+      "points per frame and points on no-line frames, houghloc beside the naive column scan "
+      "(tools/baselines/column_scan.h); line-mask precision/recall on masked images."};
+  std::string data_dir;
+  std::vector<std::string> only;
+  app.add_option("data", data_dir, "real-frame tree with index.csv (e.g. ../shared/data/real)")
+      ->required();
+  std::string config_file;
+  app.add_option("--folder", only, "run only these folders (repeatable)");
+  app.add_option("--config", config_file, "config YAML (its vision: section), as houghloc-offline");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (!std::filesystem::is_directory(data_dir)) {
+      std::fprintf(stderr, "houghloc-real-report: %s: not a folder\n", data_dir.c_str());
+      return 2;
+    }
+    const VisionConfig config = loadOfflineConfig(config_file).vision;
+    const std::vector<RealFrameLabel> labels = readRealIndex(data_dir);
+    std::vector<std::string> folders;
+    for (const RealFrameLabel& l : labels) {
+      if (folders.empty() || folders.back() != l.folder) folders.push_back(l.folder);
+    }
+    const std::set<std::string> wanted(only.begin(), only.end());
+    printRealSummaryHeader();
+    int yes = 0, empty = 0, base_empty = 0;
+    long no_points = 0;
+    for (const std::string& folder : folders) {
+      if (!wanted.empty() && !wanted.count(folder)) continue;
+      std::fprintf(stderr, "houghloc-real-report: %s\n", folder.c_str());
+      const RealFolderSummary s =
+          summarizeRealFolder(data_dir, folder, runRealFolder(data_dir, labels, folder, config));
+      printRealSummary(s);
+      yes += s.yes, empty += s.houghloc.yes_empty, base_empty += s.baseline.yes_empty;
+      no_points += s.houghloc.no_points;
+    }
+    std::printf(
+        "total: %d of %d yes-frames without a point (baseline %d); %ld points on no-frames\n",
+        empty, yes, base_empty, no_points);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "houghloc-real-report: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
