@@ -1,6 +1,7 @@
 #pragma once
 // A tiny recorded folder and a way to run houghloc-offline on it, shared by the CLI tests.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -47,7 +48,8 @@ class OfflineCli : public ::testing::Test {
   void SetUp() override {
     dir_ = fs::path(::testing::TempDir()) /
            ("offline_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));  // the process id: test runs of other trees at once
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "images");
     Recording rec;
