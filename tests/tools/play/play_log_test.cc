@@ -3,6 +3,7 @@
 // every ground-truth row, re-stamped with the recorded offsets.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <lcm/lcm-cpp.hpp>
@@ -79,6 +80,30 @@ TEST(PlayLog, PublishesEveryMessageRestamped) {
   EXPECT_EQ(counts["T_GROUND_TRUTH"], static_cast<int>(rec.ground_truth.size()));
   EXPECT_EQ(counts["T_HINT"], static_cast<int>(rec.hints.size()));
   EXPECT_GT(rec.ground_truth.size(), 0u);
+}
+
+// Runs after PublishesEveryMessageRestamped (same binary, declaration order) on its log.
+TEST(PlayLog, JavaDecodesPoseHypothesesFromTheLog) {
+#ifndef HOUGHLOC_JAVAC
+  GTEST_SKIP() << "no JDK or lcm.jar at configure time (tools/setup.sh installs them)";
+#else
+  const Recording rec = readRecording(HOUGHLOC_PLAY_FIXTURE);
+  const std::string work = HOUGHLOC_PLAY_WORK;
+  const std::string compile = std::string(HOUGHLOC_JAVAC) + " -cp " + HOUGHLOC_JAVA_CP + " -d " +
+                              work + " " + HOUGHLOC_JAVA_SRC;
+  ASSERT_EQ(std::system(compile.c_str()), 0) << compile;
+  const std::string run = std::string(HOUGHLOC_JAVA) + " -cp " + HOUGHLOC_JAVA_CP + ":" + work +
+                          " DecodeHypotheses " + work + "/play.log T_GROUND_TRUTH";
+  FILE* pipe = popen(run.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  long long count = 0, utime = 0;
+  double x = 0.0;
+  ASSERT_EQ(std::fscanf(pipe, "%lld %lld %lf", &count, &utime, &x), 3) << run;
+  ASSERT_EQ(pclose(pipe), 0);
+  EXPECT_EQ(count, static_cast<long long>(rec.ground_truth.size()));
+  EXPECT_GT(utime, 0);
+  EXPECT_NEAR(x, rec.ground_truth.front().field_T_robot.x, 1e-12);
+#endif
 }
 
 }  // namespace
