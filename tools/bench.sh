@@ -4,6 +4,8 @@
 # e.g. tools/bench.sh --benchmark_filter=Locate
 # houghloc-bench-tracking also gets two short rendered recordings (--recording=...), rendered once
 # into $BUILD_DIR/bench-recordings/ and then cached.
+# With HOUGHLOC_BENCH_JSON_DIR set, each binary also writes DIR/<binary>.json (Google Benchmark's
+# JSON format; tools/figures.sh reads them).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/setup.sh
@@ -44,6 +46,11 @@ for bench in "${benches[@]}"; do
   extra=()
   if [[ "$(basename "$bench")" == houghloc-bench-tracking ]]; then
     extra=("--recording=$(IFS=,; echo "${tracking_recordings[*]}")")
+  fi
+  if [[ -n "${HOUGHLOC_BENCH_JSON_DIR:-}" ]]; then
+    mkdir -p "$HOUGHLOC_BENCH_JSON_DIR"
+    extra+=("--benchmark_out=$HOUGHLOC_BENCH_JSON_DIR/$(basename "$bench").json"
+      --benchmark_out_format=json)
   fi
   "$bench" ${extra[@]+"${extra[@]}"} "$@"
 done

@@ -13,9 +13,8 @@
 
 #include "field_models/field_distance.h"
 #include "localization/localizer.h"
-#include "tools/offline/camera_pipelines.h"
-#include "tools/offline/field_pose_feedback.h"
 #include "tools/offline/vision_metrics.h"
+#include "tools/pipeline/localization_pipeline.h"
 #include "tools/recording/recording.h"
 #include "vision/vision_pipeline.h"
 
@@ -50,7 +49,7 @@ struct RunOptions {
   /// (roll, pitch), rad, added to the recorded camera pose, as the renderer's
   /// camera_pose_error.bias would (every camera alike)
   Eigen::Vector2d pose_error = Eigen::Vector2d::Zero();
-  /// A Localizer runs on the points and its track goes back to the pipeline (FieldPoseFeedback,
+  /// A Localizer runs on the points and its track goes back to vision (LocalizationPipeline kFull,
   /// as in houghloc-offline's full mode), so the corrector can match the points to the map.
   bool localizer_feedback = false;
   std::string measured_camera;     ///< recordings of several cameras: the one measured (all: "")
@@ -70,32 +69,28 @@ FolderRun runFolder(const std::string& name, const RunOptions& options = {}) {
   }
   if (options.correct_pose) config.pose_correction.enabled = *options.correct_pose;
   config.pose_correction.shared_between_cameras = options.shared_correction;
-  std::optional<Localizer> localizer;
-  FieldPoseFeedback feedback(0);
-  if (options.localizer_feedback) localizer.emplace(*rec.field);
-  // One pipeline (and corrector) per camera, as in houghloc-offline.
-  CameraPipelines pipelines(config,
-                            localizer ? std::make_shared<const FieldModel>(*rec.field) : nullptr);
+  // The pipeline houghloc-offline runs: vision alone, or (localizer_feedback) its full mode.
+  PipelineConfig pipeline_config;
+  pipeline_config.vision = config;
+  LocalizationPipeline pipeline(
+      options.localizer_feedback ? PipelineMode::kFull : PipelineMode::kVisionOnly,
+      std::make_shared<const FieldModel>(*rec.field), pipeline_config);
+  for (const FrameRecord& frame : rec.frames)
+    pipeline.setCamera(frame.camera_id, rec.intrinsicsFor(frame));
   VisionMetricsAccumulator metrics(*rec.field);
   std::vector<double> errors, second_half_errors;
   FolderRun run;
   for (size_t index = 0; index < rec.frames.size(); ++index) {
     const FrameRecord& frame = rec.frames[index];
-    const int i = static_cast<int>(index);
     const cv::Mat image = cv::imread((fs::path(folder) / frame.image).string(), cv::IMREAD_COLOR);
     EXPECT_FALSE(image.empty()) << frame.image;
     Pose3 recorded = frame.robot_T_camera;
     recorded.roll += options.pose_error.x();
     recorded.pitch += options.pose_error.y();
-    const std::optional<Pose2> field_T_robot =
-        localizer ? feedback.guessFor(i, frame.odometry) : std::nullopt;
-    const VisionResult result =
-        pipelines.forFrame(rec, frame).process(image, recorded, frame.t_us, field_T_robot);
-    if (localizer) {
-      feedback.publish(i, frame.odometry,
-                       localizer->process(frame.t_us, frame.odometry, {recorded}, result.ground));
-      feedback.consumed(i);
-    }
+    const SeenFrame seen =
+        pipeline.see({frame.t_us, frame.camera_id, recorded, frame.odometry}, image);
+    pipeline.locate(seen);
+    const VisionResult& result = seen.vision;
     if (!options.measured_camera.empty() && frame.camera_id != options.measured_camera) continue;
     if (result.diagnostics.pose_correction_map_inliers > 0) ++run.map_frames;
     ++run.frames;

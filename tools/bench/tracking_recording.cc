@@ -26,8 +26,9 @@ RecordedRun loadRecordedRun(const std::string& dir) {
   RecordedRun run{loadOfflineContext(options), {}, 0.0};
   requireField(run.context);
   run.points.reserve(run.context.end_frame - run.context.first_frame);
-  runVisionStage(run.context, 1, false, [&](VisionFrame& v) {
-    run.points.push_back(std::move(v.result.ground));
+  const auto vision = makePipeline(run.context, PipelineMode::kVisionOnly);
+  runVisionStage(run.context, *vision, 1, false, [&](VisionFrame& v) {
+    run.points.push_back(std::move(v.seen.vision.ground));
     run.mean_points += static_cast<double>(run.points.back().size());
   });
   if (!run.points.empty()) run.mean_points /= static_cast<double>(run.points.size());
@@ -36,12 +37,18 @@ RecordedRun loadRecordedRun(const std::string& dir) {
 
 RunOutput runLocalizer(const RecordedRun& run) {
   const OfflineContext& context = run.context;
-  FullModeLocalizer localizer(context);
+  // The localization half of houghloc-offline's full mode on the points computed once.
+  const auto pipeline = makePipeline(context, PipelineMode::kFull);
   RunOutput out;
   for (size_t k = 0; k < run.points.size(); ++k) {
     const FrameRecord& frame = context.recording.frames[context.first_frame + k];
+    SeenFrame seen;
+    seen.frame = {frame.t_us, frame.camera_id, frame.robot_T_camera, frame.odometry};
+    seen.sequence = static_cast<int>(k);
+    seen.has_image = true;
+    seen.vision.ground = run.points[k];
     const double t0 = cpuNowUs();  // the hints due are applied and timed with the frame
-    const LocalizationEstimate estimate = localizer.process(frame, run.points[k]);
+    const LocalizationEstimate estimate = pipeline->locate(seen).estimate;
     out.cpu_us.push_back(cpuNowUs() - t0);
     out.estimates.push_back(toFrameEstimate(frame.t_us, estimate));
   }

@@ -21,7 +21,7 @@ const std::vector<std::string> kTimingHeader = {"t_us",      "vision_ms", "local
                                                 "load_ms",   "skipped"};
 
 void writePoints(CsvWriter* csv, const VisionFrame& v) {
-  for (const GroundPoint& p : v.result.ground.points) {
+  for (const GroundPoint& p : v.seen.vision.ground.points) {
     csv->writeRow({csv->format(v.frame->t_us), csv->format(p.pixel.x()), csv->format(p.pixel.y()),
                    csv->format(p.p_robot.x()), csv->format(p.p_robot.y())});
   }
@@ -33,8 +33,8 @@ cv::Mat overlayFor(const OfflineContext& context, const VisionFrame& v,
     return drawMissingFrameOverlay(v.intrinsics->image_width, v.intrinsics->image_height, v.problem,
                                    estimate);
   }
-  const CameraModel camera(*v.intrinsics, v.result.robot_T_camera_used);
-  return drawLocalizationOverlay(*v.image, v.result, camera, *context.field, estimate,
+  const CameraModel camera(*v.intrinsics, v.seen.vision.robot_T_camera_used);
+  return drawLocalizationOverlay(*v.image, v.seen.vision, camera, *context.field, estimate,
                                  groundTruthAt(context.recording.ground_truth, v.frame->t_us));
 }
 
@@ -49,8 +49,8 @@ const FieldModel& requireField(const OfflineContext& context) {
   return *context.field;
 }
 
-int runLocalizationMode(const OfflineContext& context, const std::string& title, bool global_only,
-                        const LocalizationStep& step, FieldPoseFeedback* feedback) {
+int runLocalizationMode(const OfflineContext& context, LocalizationPipeline& pipeline,
+                        const std::string& title, bool global_only, const LocalizationStep& step) {
   requireField(context);
   const auto wall_start = std::chrono::steady_clock::now();
   const fs::path out(context.out_dir);
@@ -68,8 +68,7 @@ int runLocalizationMode(const OfflineContext& context, const std::string& title,
   RunStats stats;
   int done = 0;
   runVisionStage(
-      context, context.options.threads, overlays.active(),
-      [&](VisionFrame& v) {
+      context, pipeline, context.options.threads, overlays.active(), [&](VisionFrame& v) {
         if (v.skipped) {
           progress.warn(v.problem);
           ++stats.skipped;
@@ -79,7 +78,7 @@ int runLocalizationMode(const OfflineContext& context, const std::string& title,
         const LocalizationStepResult r = step(v);
         estimates.write(r.estimate);
         if (points) writePoints(points.get(), v);
-        const auto n = static_cast<std::int64_t>(v.result.ground.points.size());
+        const auto n = static_cast<std::int64_t>(v.seen.vision.ground.points.size());
         timing.writeRow({timing.format(v.frame->t_us), timing.format(v.vision_ms),
                          timing.format(r.localization_ms), timing.format(r.global_ms),
                          timing.format(n),
@@ -89,7 +88,7 @@ int runLocalizationMode(const OfflineContext& context, const std::string& title,
         stats.load_ms.push_back(v.load_ms);
         if (!v.skipped) {
           stats.vision_ms.push_back(v.vision_ms);
-          stats.corrections.add(v.frame->camera_id, v.result.diagnostics);
+          stats.corrections.add(v.frame->camera_id, v.seen.vision.diagnostics);
         }
         stats.localization_ms.push_back(r.localization_ms);
         stats.global_ms.push_back(r.global_ran ? r.global_ms : 0.0);
@@ -98,8 +97,7 @@ int runLocalizationMode(const OfflineContext& context, const std::string& title,
         ++stats.status_counts[r.estimate.status];
         if (overlays.active()) overlays.write(*v.frame, overlayFor(context, v, r.estimate));
         progress.update(++done);
-      },
-      feedback);
+      });
   progress.finish();
   estimates.close();
   timing.close();

@@ -25,9 +25,9 @@ using LocalizationStep = std::function<LocalizationStepResult(const VisionFrame&
 /// overlays and the video, progress on stderr, the summary table, and finally
 /// evaluateOutputs() + printEvaluation() (metrics.json, trajectory.png). Needs a field.
 /// Returns the exit code; throws for input and output errors (messages name the file).
-/// `feedback` (optional) hands the step's estimates back to vision (runVisionStage).
-int runLocalizationMode(const OfflineContext& context, const std::string& title, bool global_only,
-                        const LocalizationStep& step, FieldPoseFeedback* feedback = nullptr);
+/// `pipeline` runs the vision half; `step` calls its localization half.
+int runLocalizationMode(const OfflineContext& context, LocalizationPipeline& pipeline,
+                        const std::string& title, bool global_only, const LocalizationStep& step);
 
 /// Throws std::runtime_error explaining how to give a field when the context has none.
 const FieldModel& requireField(const OfflineContext& context);

@@ -1,10 +1,9 @@
 #include "tools/offline/mode_global_only.h"
 
-#include <chrono>
 #include <cmath>
 
-#include "localization/global_hough_localizer.h"
 #include "tools/offline/localization_run.h"
+#include "tools/offline/vision_stage.h"
 
 namespace houghloc {
 
@@ -23,25 +22,24 @@ const char* globalOnlyStatus(const std::vector<PoseHypothesis>& hypotheses,
 }
 
 int runGlobalOnly(const OfflineContext& context) {
-  const GlobalHoughLocalizer localizer(requireField(context), context.localizer_config.global);
+  requireField(context);
+  const auto pipeline = makePipeline(context, PipelineMode::kGlobalOnly);
   const LocalizationStep step = [&](const VisionFrame& v) {
+    const PipelineResult located = pipeline->locate(v.seen);
     LocalizationStepResult r;
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<PoseHypothesis> found = localizer.locate(v.result.ground);
-    r.global_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    r.localization_ms = r.global_ms;
+    r.global_ms = located.global_ms;
+    r.localization_ms = located.localization_ms;
     r.global_ran = true;
-    std::vector<PoseHypothesis> located;
+    std::vector<PoseHypothesis> placed;  // heading-only hypotheses have no position to write
     double weight_sum = 0.0;
-    for (const PoseHypothesis& h : found) {
+    for (const PoseHypothesis& h : located.global) {
       if (h.kind == HypothesisKind::kHeadingOnly) continue;
-      located.push_back(h);
+      placed.push_back(h);
       weight_sum += h.weight;
     }
     r.estimate.t_us = v.frame->t_us;
-    r.estimate.status = globalOnlyStatus(located);
-    for (const PoseHypothesis& h : located) {
+    r.estimate.status = globalOnlyStatus(placed);
+    for (const PoseHypothesis& h : placed) {
       GaussianPose pose;
       pose.mean = h.field_T_robot;
       pose.covariance = h.covariance;
@@ -50,7 +48,7 @@ int runGlobalOnly(const OfflineContext& context) {
     }
     return r;
   };
-  return runLocalizationMode(context, "houghloc-offline --global-only", true, step);
+  return runLocalizationMode(context, *pipeline, "houghloc-offline --global-only", true, step);
 }
 
 }  // namespace houghloc

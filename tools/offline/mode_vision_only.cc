@@ -72,42 +72,46 @@ int runVisionOnly(const OfflineContext& context) {
   RunStats stats;
   const int total = context.end_frame - context.first_frame;
   // Same loading and per-camera pipelines as the localization modes (tools/offline/vision_stage).
-  runVisionStage(context, context.options.threads, context.options.overlay, [&](VisionFrame& v) {
-    if (v.skipped) {
-      std::fprintf(stderr, "%swarning: %s\n", context.options.quiet ? "" : "\n", v.problem.c_str());
-      ++stats.skipped;
-      return;
-    }
-    const FrameRecord& frame = *v.frame;
-    const VisionResult& result = v.result;
-    ++stats.processed;
-    stats.points += static_cast<long>(result.ground.points.size());
-    stats.total_ms += result.diagnostics.time_total_ms;
-    stats.max_ms = std::max(stats.max_ms, result.diagnostics.time_total_ms);
-    stats.corrections.add(frame.camera_id, result.diagnostics);
-    for (const GroundPoint& p : result.ground.points) {
-      points_csv.writeRow({points_csv.format(frame.t_us), points_csv.format(p.pixel.x()),
-                           points_csv.format(p.pixel.y()), points_csv.format(p.p_robot.x()),
-                           points_csv.format(p.p_robot.y())});
-    }
-    timing_csv.writeRow(
-        {points_csv.format(frame.t_us), timing_csv.format(result.diagnostics.time_total_ms),
-         timing_csv.format(static_cast<std::int64_t>(result.ground.points.size()))});
-    if (metrics) {
-      if (const auto truth = groundTruthAt(rec.ground_truth, frame.t_us)) {
-        // Visibility is judged from the recorded pose, as the ground truth was rendered.
-        const CameraModel camera(*v.intrinsics, frame.robot_T_camera);
-        metrics->addFrame(result.ground, *truth, visibleAt(rec.visible, frame.t_us), camera);
-        ++stats.scored;
-      }
-    }
-    if (v.image) {
-      const std::string name = fs::path(frame.image).stem().string() + ".png";
-      const CameraModel camera(*v.intrinsics, result.robot_T_camera_used);
-      cv::imwrite((out / "overlay" / name).string(), drawVisionOverlay(*v.image, result, camera));
-    }
-    reportProgress(context, "vision", v.index - context.first_frame + 1, total);
-  });
+  const auto pipeline = makePipeline(context, PipelineMode::kVisionOnly);
+  runVisionStage(
+      context, *pipeline, context.options.threads, context.options.overlay, [&](VisionFrame& v) {
+        if (v.skipped) {
+          std::fprintf(stderr, "%swarning: %s\n", context.options.quiet ? "" : "\n",
+                       v.problem.c_str());
+          ++stats.skipped;
+          return;
+        }
+        const FrameRecord& frame = *v.frame;
+        const VisionResult& result = v.seen.vision;
+        ++stats.processed;
+        stats.points += static_cast<long>(result.ground.points.size());
+        stats.total_ms += result.diagnostics.time_total_ms;
+        stats.max_ms = std::max(stats.max_ms, result.diagnostics.time_total_ms);
+        stats.corrections.add(frame.camera_id, result.diagnostics);
+        for (const GroundPoint& p : result.ground.points) {
+          points_csv.writeRow({points_csv.format(frame.t_us), points_csv.format(p.pixel.x()),
+                               points_csv.format(p.pixel.y()), points_csv.format(p.p_robot.x()),
+                               points_csv.format(p.p_robot.y())});
+        }
+        timing_csv.writeRow(
+            {points_csv.format(frame.t_us), timing_csv.format(result.diagnostics.time_total_ms),
+             timing_csv.format(static_cast<std::int64_t>(result.ground.points.size()))});
+        if (metrics) {
+          if (const auto truth = groundTruthAt(rec.ground_truth, frame.t_us)) {
+            // Visibility is judged from the recorded pose, as the ground truth was rendered.
+            const CameraModel camera(*v.intrinsics, frame.robot_T_camera);
+            metrics->addFrame(result.ground, *truth, visibleAt(rec.visible, frame.t_us), camera);
+            ++stats.scored;
+          }
+        }
+        if (v.image) {
+          const std::string name = fs::path(frame.image).stem().string() + ".png";
+          const CameraModel camera(*v.intrinsics, result.robot_T_camera_used);
+          cv::imwrite((out / "overlay" / name).string(),
+                      drawVisionOverlay(*v.image, result, camera));
+        }
+        reportProgress(context, "vision", v.index - context.first_frame + 1, total);
+      });
   points_csv.close();
   timing_csv.close();
   std::optional<VisionMetrics> summary;

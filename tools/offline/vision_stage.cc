@@ -10,7 +10,6 @@
 #include <stdexcept>
 #include <thread>
 
-#include "tools/offline/camera_pipelines.h"
 #include "tools/offline/offline_output.h"
 
 namespace houghloc {
@@ -23,16 +22,15 @@ double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-/// Image loading and one VisionPipeline per camera id, fed strictly in frame order.
+PipelineFrame pipelineFrame(const FrameRecord& frame) {
+  return {frame.t_us, frame.camera_id, frame.robot_T_camera, frame.odometry};
+}
+
+/// Image loading and the pipeline's vision half, fed strictly in frame order.
 class VisionWorker {
  public:
-  VisionWorker(const OfflineContext& context, bool keep_images, FieldPoseFeedback* feedback)
-      : context_(context),
-        keep_images_(keep_images),
-        feedback_(feedback),
-        with_map_(feedback_ && context_.field),
-        pipelines_(context_.vision_config,
-                   with_map_ ? std::make_shared<const FieldModel>(*context_.field) : nullptr) {}
+  VisionWorker(const OfflineContext& context, LocalizationPipeline& pipeline, bool keep_images)
+      : context_(context), pipeline_(pipeline), keep_images_(keep_images) {}
 
   VisionFrame process(int index) {
     const Recording& rec = context_.recording;
@@ -40,21 +38,17 @@ class VisionWorker {
     out.index = index;
     out.frame = &rec.frames[static_cast<size_t>(index)];
     out.intrinsics = &rec.intrinsicsFor(*out.frame);
-    out.result.ground.t_us = out.frame->t_us;
     const auto load_start = Clock::now();
     std::optional<cv::Mat> image = loadFrameImage(context_, *out.frame, &out.problem);
     out.load_ms = msSince(load_start);
     if (!image) {
       out.skipped = true;
+      out.seen = pipeline_.seeNothing(pipelineFrame(*out.frame));
       return out;
     }
-    VisionPipeline& pipeline = pipelines_.forFrame(rec, *out.frame);
-    std::optional<Pose2> field_T_robot;
-    if (with_map_) field_T_robot = feedback_->guessFor(index, out.frame->odometry);
     const auto start = Clock::now();
     try {
-      out.result =
-          pipeline.process(*image, out.frame->robot_T_camera, out.frame->t_us, field_T_robot);
+      out.seen = pipeline_.see(pipelineFrame(*out.frame), *image);
     } catch (const std::invalid_argument& e) {
       throw std::runtime_error((fs::path(rec.folder) / out.frame->image).string() + ": " +
                                e.what());
@@ -66,10 +60,8 @@ class VisionWorker {
 
  private:
   const OfflineContext& context_;
+  LocalizationPipeline& pipeline_;
   bool keep_images_;
-  FieldPoseFeedback* feedback_;
-  bool with_map_;  ///< the localizer's track comes back and there is a map to match it to
-  CameraPipelines pipelines_;
 };
 
 /// A bounded hand-over queue between the vision thread and the consumer.
@@ -123,17 +115,30 @@ class FrameQueue {
 
 }  // namespace
 
-void runVisionStage(const OfflineContext& context, int threads, bool keep_images,
-                    const std::function<void(VisionFrame&)>& consume, FieldPoseFeedback* feedback) {
-  VisionWorker worker(context, keep_images, feedback);
-  const auto consumeAndReport = [&](VisionFrame& frame) {
-    consume(frame);
-    if (feedback) feedback->consumed(frame.index);
-  };
+std::unique_ptr<LocalizationPipeline> makePipeline(const OfflineContext& context,
+                                                   PipelineMode mode) {
+  PipelineConfig config;
+  config.vision = context.vision_config;
+  config.localizer = context.localizer_config;
+  std::shared_ptr<const FieldModel> field;
+  if (context.field) field = std::make_shared<const FieldModel>(*context.field);
+  auto pipeline = std::make_unique<LocalizationPipeline>(mode, field, config);
+  const Recording& rec = context.recording;
+  for (int i = context.first_frame; i < context.end_frame; ++i) {
+    const FrameRecord& frame = rec.frames[static_cast<size_t>(i)];
+    pipeline->setCamera(frame.camera_id, rec.intrinsicsFor(frame));
+  }
+  for (const LocalizationHint& hint : context.hints) pipeline->queueHint(hint);
+  return pipeline;
+}
+
+void runVisionStage(const OfflineContext& context, LocalizationPipeline& pipeline, int threads,
+                    bool keep_images, const std::function<void(VisionFrame&)>& consume) {
+  VisionWorker worker(context, pipeline, keep_images);
   if (threads <= 1) {
     for (int i = context.first_frame; i < context.end_frame; ++i) {
       VisionFrame frame = worker.process(i);
-      consumeAndReport(frame);
+      consume(frame);
     }
     return;
   }
@@ -152,10 +157,10 @@ void runVisionStage(const OfflineContext& context, int threads, bool keep_images
   });
   try {
     VisionFrame frame;
-    while (queue.pop(&frame)) consumeAndReport(frame);
+    while (queue.pop(&frame)) consume(frame);
   } catch (...) {
     queue.stop();
-    if (feedback) feedback->abort();  // the producer may wait for a frame never consumed
+    pipeline.stop();  // the producer may wait for a frame never located
     producer.join();
     throw;
   }

@@ -1,4 +1,4 @@
-#include "tools/offline/field_pose_feedback.h"
+#include "tools/pipeline/field_pose_feedback.h"
 
 #include <gtest/gtest.h>
 

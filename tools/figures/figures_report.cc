@@ -1,0 +1,171 @@
+#include "tools/figures/figures_report.h"
+
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace houghloc::figures {
+namespace {
+
+using nlohmann::json;
+
+const json& member(const json& object, const char* key, const std::string& source) {
+  if (!object.is_object() || !object.contains(key)) {
+    throw std::runtime_error(source + ": missing key '" + key + "'");
+  }
+  return object.at(key);
+}
+
+/// Keys of a benchmark row that Google Benchmark writes itself; every other number is a user
+/// counter.
+bool isStandardBenchmarkKey(const std::string& key) {
+  static const char* const kKeys[] = {"name",
+                                      "family_index",
+                                      "per_family_instance_index",
+                                      "run_name",
+                                      "run_type",
+                                      "repetitions",
+                                      "repetition_index",
+                                      "threads",
+                                      "iterations",
+                                      "real_time",
+                                      "cpu_time",
+                                      "time_unit",
+                                      "aggregate_name",
+                                      "aggregate_unit",
+                                      "error_occurred",
+                                      "error_message"};
+  for (const char* k : kKeys) {
+    if (key == k) return true;
+  }
+  return false;
+}
+
+/// Keys of a test case that GoogleTest writes itself; the others come from RecordProperty.
+bool isStandardTestKey(const std::string& key) {
+  static const char* const kKeys[] = {"name",     "file",       "line",       "status",
+                                      "result",   "timestamp",  "time",       "classname",
+                                      "failures", "type_param", "value_param"};
+  for (const char* k : kKeys) {
+    if (key == k) return true;
+  }
+  return false;
+}
+
+/// Three significant digits, enough for a figure and short enough for a table cell.
+std::string formatNumber(double value) {
+  std::ostringstream out;
+  out << std::setprecision(3) << value;
+  return out.str();
+}
+
+BenchmarkFigure toBenchmark(const json& row, const std::string& source) {
+  BenchmarkFigure figure;
+  figure.name = member(row, "run_name", source).get<std::string>();
+  figure.real_time = member(row, "real_time", source).get<double>();
+  figure.cpu_time = member(row, "cpu_time", source).get<double>();
+  figure.time_unit = member(row, "time_unit", source).get<std::string>();
+  for (const auto& [key, value] : row.items()) {
+    if (!isStandardBenchmarkKey(key) && value.is_number()) figure.counters[key] = value;
+  }
+  return figure;
+}
+
+}  // namespace
+
+std::vector<BenchmarkFigure> parseBenchmarks(const json& document, const std::string& source) {
+  const json& rows = member(document, "benchmarks", source);
+  if (!rows.is_array()) throw std::runtime_error(source + ": 'benchmarks' is not a list");
+  // A benchmark run with repetitions reports each repetition and aggregates: keep the median.
+  bool has_medians = false;
+  for (const json& row : rows) {
+    has_medians |= row.value("aggregate_name", "") == "median";
+  }
+  std::vector<BenchmarkFigure> figures;
+  for (const json& row : rows) {
+    if (row.value("error_occurred", false)) continue;
+    const std::string run_type = row.value("run_type", "iteration");
+    const bool wanted =
+        has_medians ? (run_type == "aggregate" && row.value("aggregate_name", "") == "median")
+                    : run_type == "iteration";
+    if (wanted) figures.push_back(toBenchmark(row, source));
+  }
+  return figures;
+}
+
+std::vector<TestFigure> parseTests(const json& document, const std::string& source) {
+  std::vector<TestFigure> figures;
+  for (const json& suite : member(document, "testsuites", source)) {
+    for (const json& test : member(suite, "testsuite", source)) {
+      TestFigure figure;
+      figure.suite = member(suite, "name", source).get<std::string>();
+      figure.name = member(test, "name", source).get<std::string>();
+      figure.skipped = test.value("result", "") == "SKIPPED";
+      figure.passed = !test.contains("failures") && !figure.skipped;
+      // GoogleTest writes RecordProperty values as extra string members of the test object.
+      for (const auto& [key, value] : test.items()) {
+        const bool standard = isStandardTestKey(key);
+        if (!standard && value.is_string()) figure.properties[key] = value.get<std::string>();
+      }
+      figures.push_back(std::move(figure));
+    }
+  }
+  return figures;
+}
+
+std::string formatReport(const ReportHeader& header,
+                         const std::map<std::string, std::vector<BenchmarkFigure>>& benchmarks,
+                         const std::map<std::string, std::vector<TestFigure>>& tests) {
+  std::ostringstream out;
+  out << "# Measured figures\n\n"
+      << "Generated by `tools/figures.sh` (do not edit by hand) at commit `" << header.commit
+      << "`, " << header.date << ", on " << header.machine << ".\n\n";
+  out << "## Benchmarks\n\nMedian of the repetitions where a benchmark repeats; times are CPU "
+         "time of the benchmark thread. Counters are the benchmark's own (ratios against the "
+         "baseline of the same run, success rates, sizes).\n";
+  for (const auto& [binary, figures] : benchmarks) {
+    out << "\n### " << binary << "\n\n| benchmark | CPU time | wall time | counters |\n"
+        << "|---|---|---|---|\n";
+    for (const BenchmarkFigure& f : figures) {
+      std::string counters;
+      for (const auto& [key, value] : f.counters) {
+        counters += (counters.empty() ? "" : ", ") + key + " " + formatNumber(value);
+      }
+      out << "| " << f.name << " | " << formatNumber(f.cpu_time) << " " << f.time_unit << " | "
+          << formatNumber(f.real_time) << " " << f.time_unit << " | " << counters << " |\n";
+    }
+  }
+  out << "\n## Tests\n\n| test binary | passed | failed | skipped |\n|---|---|---|---|\n";
+  for (const auto& [binary, figures] : tests) {
+    int passed = 0, failed = 0, skipped = 0;
+    for (const TestFigure& f : figures) {
+      if (f.skipped) {
+        ++skipped;
+      } else if (f.passed) {
+        ++passed;
+      } else {
+        ++failed;
+      }
+    }
+    out << "| " << binary << " | " << passed << " | " << failed << " | " << skipped << " |\n";
+  }
+  out << "\n### Figures the tests recorded\n\nEach test asserts its figures against its bounds; "
+         "these are the values of this run.\n\n| test | result | figures |\n|---|---|---|\n";
+  for (const auto& [binary, figures] : tests) {
+    for (const TestFigure& f : figures) {
+      if (f.properties.empty()) continue;
+      std::string values;
+      for (const auto& [key, value] : f.properties) {
+        values += (values.empty() ? "" : ", ") + key + " " + value;
+      }
+      out << "| " << f.suite << "." << f.name << " | "
+          << (f.skipped  ? "skipped"
+              : f.passed ? "passed"
+                         : "FAILED")
+          << " | " << values << " |\n";
+    }
+  }
+  return out.str();
+}
+
+}  // namespace houghloc::figures
