@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# houghloc-play -> houghloc-node -> lcm-logger, three processes over udpm:// in a network
+# namespace this test creates (lo only, ttl=0); node_log_check then checks the log, and the node
+# must exit within 1 s of SIGTERM.
+#   node_udpm_test.sh PLAY NODE CHECK FOLDER WORK
+set -euo pipefail
+play=$1 node=$2 check=$3 folder=$4 work=$5
+mkdir -p "$work"
+if ! unshare -n true 2>/dev/null; then
+  echo "SKIPPED: unshare -n is not permitted here (needs root or CAP_SYS_ADMIN)"
+  exit 77
+fi
+log="$work/node_udpm.log"
+rm -f "$log"
+unshare -n bash -euo pipefail -c '
+  ip link set lo up
+  ip route add 224.0.0.0/4 dev lo
+  url="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
+  lcm-logger -q -f --lcm-url="$url" "$1" &
+  logger=$!
+  "$3" --field "$4/field.yaml" --camera-yaml "$4/camera.yaml" --lcm-url "$url" &
+  node=$!
+  sleep 1.5
+  "$2" "$4" --lcm-url "$url"
+  sleep 0.5
+  start=$(date +%s%N)
+  kill -TERM $node
+  wait $node
+  ms=$(( ($(date +%s%N) - start) / 1000000 ))
+  echo "houghloc-node exited ${ms} ms after SIGTERM"
+  kill -INT $logger
+  wait $logger || true
+  [ "$ms" -le 1000 ]
+' bash "$log" "$play" "$node" "$folder"
+# 10 % lost allowed here: on a 2-core machine shared with other builds the node falls behind
+# and drops images as designed (newest wins); the 1 % target is measured on an idle machine
+# with node_log_check LOG (docs/node.md).
+"$check" "$log" 10
