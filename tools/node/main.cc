@@ -1,21 +1,13 @@
 // houghloc-node: the onboard LCM process (DESIGN §1, §7).
 #include <CLI/CLI.hpp>
-#include <atomic>
-#include <csignal>
 #include <iostream>
 #include <lcm/lcm-cpp.hpp>
 
 #include "field_models/field_yaml.h"
 #include "field_models/standard_fields.h"
+#include "tools/lcm/stop_signal.h"
 #include "tools/node/node_runner.h"
 #include "tools/offline/offline_config.h"
-
-namespace {
-
-std::atomic<bool> g_stop{false};
-void onSignal(int) { g_stop = true; }
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace houghloc;
@@ -55,10 +47,9 @@ int main(int argc, char** argv) {
     if (!lcm.good()) throw std::runtime_error("cannot open LCM URL '" + url + "'");
     NodeCore core(std::make_shared<const FieldModel>(field), config, cameras);
     NodeRunner runner(lcm, core, prefix, line_points == "on");
-    std::signal(SIGINT, onSignal);
-    std::signal(SIGTERM, onSignal);
+    const std::atomic<bool>& stop = installStopSignals();
     std::cerr << "houghloc-node: running, " << cameras.size() << " camera(s)\n";
-    runner.run(g_stop);
+    runner.run(stop);
     const localizer_status_t status = core.status();
     std::cerr << "houghloc-node: stopped after " << status.frames_processed << " images, dropped "
               << core.drops().total() << "\n";

@@ -1,19 +1,11 @@
 // houghloc-play: publishes a recorded folder on houghloc-node's input channels (DESIGN §7).
 #include <CLI/CLI.hpp>
-#include <atomic>
-#include <csignal>
 #include <iostream>
 #include <lcm/lcm-cpp.hpp>
 
 #include "houghloc/image_t.hpp"
+#include "tools/lcm/stop_signal.h"
 #include "tools/play/player.h"
-
-namespace {
-
-std::atomic<bool> g_stop{false};
-void onSignal(int) { g_stop = true; }
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace houghloc;
@@ -38,8 +30,7 @@ int main(int argc, char** argv) {
   options.pixel_format = format == "bgr8"    ? image_t::PIXEL_FORMAT_BGR8
                          : format == "mjpeg" ? image_t::PIXEL_FORMAT_MJPEG
                                              : image_t::PIXEL_FORMAT_YUYV;
-  std::signal(SIGINT, onSignal);
-  std::signal(SIGTERM, onSignal);
+  const std::atomic<bool>& stop = installStopSignals();
   try {
     const Recording recording = readRecording(folder);
     lcm::LCM lcm(url);
@@ -50,9 +41,9 @@ int main(int argc, char** argv) {
     Player player(lcm, recording, options);
     int pass = 0;
     do {
-      const int images = player.playOnce(g_stop);
+      const int images = player.playOnce(stop);
       std::cerr << "houghloc-play: pass " << ++pass << ": " << images << " images published\n";
-    } while (options.loop && !g_stop);
+    } while (options.loop && !stop);
     if (options.fast)
       std::cerr << "houghloc-play: " << player.hypothesesReceived() << " HYPOTHESES received\n";
   } catch (const std::exception& e) {

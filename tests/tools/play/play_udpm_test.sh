@@ -6,17 +6,12 @@
 set -euo pipefail
 play=$1 folder=$2 work=$3 checker=$4
 mkdir -p "$work"
-if ! unshare -n true 2>/dev/null; then
-  echo "SKIPPED: unshare -n is not permitted here (needs root or CAP_SYS_ADMIN)"
-  exit 77
-fi
+source "$(dirname "$0")/../lcm_netns.sh"
 log="$work/udpm.log"
 rm -f "$log"
 unshare -n bash -euo pipefail -c '
-  ip link set lo up
-  ip route add 224.0.0.0/4 dev lo
-  # 4 MB receive buffer (net.core.rmem_max caps it): a YUYV 640x480 frame is 614 KB.
-  url="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
+  eval "$HOUGHLOC_NETNS_SETUP"
+  url=$HOUGHLOC_TEST_URL
   lcm-logger -q -f --lcm-url="$url" "$1" &
   logger=$!
   sleep 0.5
