@@ -2,9 +2,12 @@
 # houghloc-play -> houghloc-node -> lcm-logger, three processes over udpm:// in a network
 # namespace this test creates (lo only, ttl=0); node_log_check then checks the log, and the node
 # must exit within 1 s of SIGTERM.
-#   node_udpm_test.sh PLAY NODE CHECK FOLDER WORK
+#   node_udpm_test.sh PLAY NODE CHECK FOLDER WORK [JAVAC JAVA CLASSPATH JAVA_SOURCE]
+# With the Java arguments, DecodeHypotheses.java compiled against the jar must decode as many
+# HYPOTHESES from the log as node_log_check counted.
 set -euo pipefail
 play=$1 node=$2 check=$3 folder=$4 work=$5
+javac=${6:-} java=${7:-} cp=${8:-} java_src=${9:-}
 mkdir -p "$work"
 source "$(dirname "$0")/../lcm_netns.sh"
 log="$work/node_udpm.log"
@@ -31,4 +34,12 @@ unshare -n bash -euo pipefail -c '
 # 10 % lost allowed here: on a 2-core machine shared with other builds the node falls behind
 # and drops images as designed (newest wins); the 1 % target is measured on an idle machine
 # with node_log_check LOG (docs/node.md).
-"$check" "$log" 10
+summary=$("$check" "$log" 10)
+echo "$summary"
+if [[ -n "$javac" ]]; then
+  "$javac" -cp "$cp" -d "$work" "$java_src"
+  decoded=$("$java" -cp "$cp:$work" DecodeHypotheses "$log" HYPOTHESES)
+  echo "Java DecodeHypotheses: $decoded"
+  expected=$(sed -E 's/.*hypotheses ([0-9]+).*/\1/' <<<"$summary")
+  [[ "${decoded%% *}" == "$expected" ]]
+fi
