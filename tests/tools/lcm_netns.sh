@@ -1,0 +1,10 @@
+# Sourced by the udpm:// tests: exits 77 (ctest SKIP_RETURN_CODE) with a clear message when
+# `unshare -n` is not permitted, and defines the URL and the namespace set-up (DESIGN §7: lo
+# only, multicast route on lo, ttl=0; a 4 MB receive buffer, capped by net.core.rmem_max, for
+# 614 KB YUYV frames).
+if ! unshare -n true 2>/dev/null; then
+  echo "SKIPPED: unshare -n is not permitted here (needs root or CAP_SYS_ADMIN)"
+  exit 77
+fi
+export HOUGHLOC_TEST_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
+export HOUGHLOC_NETNS_SETUP="ip link set lo up; ip route add 224.0.0.0/4 dev lo"

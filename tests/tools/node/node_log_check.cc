@@ -1,0 +1,71 @@
+// Checks an lcm-logger log of houghloc-play + houghloc-node (node_udpm_test.sh): HYPOTHESES for
+// >= 99 % of the images, STATUS about every second, and the best hypothesis within 10 cm and
+// 3 deg of GROUND_TRUTH on >= 95 % of the frames from the first correct one. Exit 0 when met.
+//   node_log_check LOG [MAX_LOST_PERCENT]
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <lcm/lcm-cpp.hpp>
+#include <map>
+#include <string>
+
+#include "houghloc/image_t.hpp"
+#include "houghloc/localizer_status_t.hpp"
+#include "houghloc/pose_hypotheses_t.hpp"
+
+int main(int argc, char** argv) {
+  using namespace houghloc;
+  if (argc != 2 && argc != 3) {
+    std::fprintf(stderr, "usage: node_log_check LOG [MAX_LOST_PERCENT]\n");
+    return 2;
+  }
+  lcm::LogFile file(argv[1], "r");
+  if (!file.good()) {
+    std::fprintf(stderr, "node_log_check: cannot read %s\n", argv[1]);
+    return 2;
+  }
+  std::map<std::int64_t, pose_hypotheses_t> truth, estimates;
+  int images = 0, statuses = 0;
+  std::int64_t first_ts = -1, last_ts = 0;
+  while (const lcm::LogEvent* e = file.readNextEvent()) {
+    if (e->channel == "IMAGE") {
+      ++images;
+      if (first_ts < 0) first_ts = e->timestamp;
+      last_ts = e->timestamp;
+    } else if (e->channel == "STATUS") {
+      ++statuses;
+    } else if (e->channel == "HYPOTHESES" || e->channel == "GROUND_TRUTH") {
+      pose_hypotheses_t msg;
+      if (msg.decode(e->data, 0, e->datalen) != e->datalen) return 3;
+      (e->channel == "HYPOTHESES" ? estimates : truth)[msg.utime] = msg;
+    }
+  }
+  int scored = 0, correct = 0;
+  bool started = false;
+  for (const auto& [utime, est] : estimates) {
+    const auto t = truth.find(utime);
+    if (t == truth.end() || t->second.num_hypotheses != 1) continue;
+    bool ok = false;
+    if (est.num_hypotheses > 0) {
+      const pose_hypothesis_t& a = est.hypotheses[0];
+      const pose_hypothesis_t& b = t->second.hypotheses[0];
+      const double dtheta = std::remainder(a.theta - b.theta, 2 * M_PI);
+      ok = std::hypot(a.x - b.x, a.y - b.y) <= 0.10 && std::abs(dtheta) <= 3.0 * M_PI / 180.0;
+    }
+    started = started || ok;
+    if (!started) continue;
+    ++scored;
+    correct += ok;
+  }
+  const double seconds = (last_ts - first_ts) * 1e-6;
+  const double lost = images > 0 ? 1.0 - static_cast<double>(estimates.size()) / images : 1.0;
+  const double share = scored > 0 ? static_cast<double>(correct) / scored : 0.0;
+  std::printf(
+      "images %d, hypotheses %zu (lost %.1f %%), status %d in %.1f s, correct %.1f %% "
+      "of %d\n",
+      images, estimates.size(), 100.0 * lost, statuses, seconds, 100.0 * share, scored);
+  const double max_lost = argc == 3 ? std::atof(argv[2]) / 100.0 : 0.01;
+  const bool ok = images > 0 && lost <= max_lost && statuses >= static_cast<int>(seconds) &&
+                  statuses <= static_cast<int>(seconds) + 6 && share >= 0.95;
+  return ok ? 0 : 1;
+}

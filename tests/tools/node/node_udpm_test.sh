@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# houghloc-play -> houghloc-node -> lcm-logger, three processes over udpm:// in a network
+# namespace this test creates (lo only, ttl=0); node_log_check then checks the log, and the node
+# must exit within 1 s of SIGTERM.
+#   node_udpm_test.sh PLAY NODE CHECK FOLDER WORK [JAVAC JAVA CLASSPATH JAVA_SOURCE]
+# With the Java arguments, DecodeHypotheses.java compiled against the jar must decode as many
+# HYPOTHESES from the log as node_log_check counted.
+set -euo pipefail
+play=$1 node=$2 check=$3 folder=$4 work=$5
+javac=${6:-} java=${7:-} cp=${8:-} java_src=${9:-}
+mkdir -p "$work"
+source "$(dirname "$0")/../lcm_netns.sh"
+log="$work/node_udpm.log"
+rm -f "$log"
+unshare -n bash -euo pipefail -c '
+  eval "$HOUGHLOC_NETNS_SETUP"
+  url=$HOUGHLOC_TEST_URL
+  lcm-logger -q -f --lcm-url="$url" "$1" &
+  logger=$!
+  "$3" --field "$4/field.yaml" --camera-yaml "$4/camera.yaml" --lcm-url "$url" &
+  node=$!
+  sleep 1.5
+  "$2" "$4" --lcm-url "$url"
+  sleep 0.5
+  start=$(date +%s%N)
+  kill -TERM $node
+  wait $node
+  ms=$(( ($(date +%s%N) - start) / 1000000 ))
+  echo "houghloc-node exited ${ms} ms after SIGTERM"
+  kill -INT $logger
+  wait $logger || true
+  [ "$ms" -le 1000 ]
+' bash "$log" "$play" "$node" "$folder"
+# 10 % lost allowed here: on a 2-core machine shared with other builds the node falls behind
+# and drops images as designed (newest wins); the 1 % target is measured on an idle machine
+# with node_log_check LOG (docs/node.md).
+summary=$("$check" "$log" 10)
+echo "$summary"
+if [[ -n "$javac" ]]; then
+  "$javac" -cp "$cp" -d "$work" "$java_src"
+  decoded=$("$java" -cp "$cp:$work" DecodeHypotheses "$log" HYPOTHESES)
+  echo "Java DecodeHypotheses: $decoded"
+  expected=$(sed -E 's/.*hypotheses ([0-9]+).*/\1/' <<<"$summary")
+  [[ "${decoded%% *}" == "$expected" ]]
+fi

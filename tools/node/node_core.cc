@@ -1,0 +1,113 @@
+#include "tools/node/node_core.h"
+
+#include <chrono>
+
+#include "tools/lcm/message_conversion.h"
+
+namespace houghloc {
+
+NodeCore::NodeCore(std::shared_ptr<const FieldModel> field, const PipelineConfig& config,
+                   const std::map<std::string, CameraIntrinsics>& cameras,
+                   const NodeTimingConfig& timing)
+    : pipeline_(PipelineMode::kFull, std::move(field), config), cameras_(cameras), timing_(timing) {
+  for (const auto& [id, intrinsics] : cameras_) pipeline_.setCamera(id, intrinsics);
+}
+
+void NodeCore::drop(DropReason reason, const std::string& message) {
+  drops_.add(reason);
+  problem_ = message;
+}
+
+void NodeCore::onOdometry(const odometry_t& msg) {
+  const std::optional<Pose2> odometry = odometryFromMessage(msg);
+  if (!odometry) return drop(DropReason::kMalformed, "odometry with NaN or infinity");
+  odometry_.push(msg.utime, *odometry);
+}
+
+void NodeCore::onCameraPose(const camera_pose_t& msg) {
+  const std::optional<Pose3> pose = cameraPoseFromMessage(msg);
+  if (!pose)
+    return drop(DropReason::kMalformed, "camera '" + msg.camera_id + "': pose with NaN or inf");
+  camera_poses_[msg.camera_id].push(msg.utime, *pose);
+}
+
+void NodeCore::onHint(const localization_hint_t& msg) {
+  try {
+    pipeline_.queueHint(hintFromMessage(msg));
+  } catch (const MessageError& e) {
+    drop(DropReason::kMalformed, e.what());
+  }
+}
+
+std::optional<NodeOutput> NodeCore::onImage(const image_t& msg) {
+  const auto camera = cameras_.find(msg.camera_id);
+  if (camera == cameras_.end()) {
+    drop(DropReason::kMalformed, "image of unknown camera '" + msg.camera_id + "'");
+    return std::nullopt;
+  }
+  const auto last = last_image_utime_.find(msg.camera_id);
+  if (last != last_image_utime_.end() && msg.utime <= last->second) {
+    drop(DropReason::kOldImage, "camera '" + msg.camera_id + "': image older than the last");
+    return std::nullopt;
+  }
+  cv::Mat image;
+  try {
+    image = imageFromMessage(msg);
+  } catch (const MessageError& e) {
+    drop(DropReason::kMalformed, "camera '" + msg.camera_id + "': " + e.what());
+    return std::nullopt;
+  }
+  const CameraIntrinsics& intrinsics = camera->second;
+  if (image.cols != intrinsics.image_width || image.rows != intrinsics.image_height) {
+    drop(DropReason::kBadSize, "camera '" + msg.camera_id + "': image " +
+                                   std::to_string(image.cols) + "x" + std::to_string(image.rows) +
+                                   ", camera.yaml " + std::to_string(intrinsics.image_width) + "x" +
+                                   std::to_string(intrinsics.image_height));
+    return std::nullopt;
+  }
+  const auto poses = camera_poses_.find(msg.camera_id);
+  std::optional<Pose3> robot_T_camera;
+  if (poses != camera_poses_.end())
+    robot_T_camera = poses->second.at(msg.utime, timing_.max_camera_pose_gap_us);
+  if (!robot_T_camera) {
+    drop(DropReason::kNoCameraPose, "camera '" + msg.camera_id + "': no camera pose within 50 ms");
+    return std::nullopt;
+  }
+  last_image_utime_[msg.camera_id] = msg.utime;
+  const PipelineFrame frame{msg.utime, msg.camera_id, *robot_T_camera,
+                            odometry_.at(msg.utime, timing_.max_odometry_gap_us)};
+  const auto start = std::chrono::steady_clock::now();
+  const SeenFrame seen = pipeline_.see(frame, image);
+  const PipelineResult result = pipeline_.locate(seen);
+  last_cycle_ms_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  ++frames_processed_;
+  last_utime_ = msg.utime;
+  last_estimate_ = result.estimate;
+
+  NodeOutput out;
+  out.hypotheses = hypothesesToMessage(msg.utime, result.estimate);
+  out.line_points.utime = msg.utime;
+  out.line_points.camera_id = msg.camera_id;
+  for (const GroundPoint& p : seen.vision.ground.points) {
+    out.line_points.x.push_back(static_cast<float>(p.p_robot.x()));
+    out.line_points.y.push_back(static_cast<float>(p.p_robot.y()));
+  }
+  out.line_points.num_points = static_cast<std::int32_t>(out.line_points.x.size());
+  return out;
+}
+
+localizer_status_t NodeCore::status() const {
+  localizer_status_t msg{};
+  msg.utime = last_utime_;
+  msg.state = statusToMessage(last_estimate_.status);
+  msg.cycle_time_ms = last_cycle_ms_;
+  msg.points_in = last_estimate_.points_in;
+  msg.points_used = last_estimate_.points_used;
+  msg.frames_processed = frames_processed_;
+  drops_.fill(msg);
+  msg.message = problem_;
+  return msg;
+}
+
+}  // namespace houghloc
