@@ -74,7 +74,10 @@ void pruneWeak(const TrackedSetConfig& config, std::vector<TrackedHypothesis>* s
   if (set->empty()) return;
   const double threshold = set->front().pose.weight * config.prune_relative_weight;
   set->erase(std::remove_if(set->begin() + 1, set->end(),
-                            [&](const TrackedHypothesis& h) { return h.pose.weight < threshold; }),
+                            [&](const TrackedHypothesis& h) {
+                              // Newcomers are judged by one frame of points before they can go.
+                              return h.age_frames > 0 && h.pose.weight < threshold;
+                            }),
              set->end());
   if (static_cast<int>(set->size()) > config.max_hypotheses) {
     set->resize(static_cast<size_t>(std::max(config.max_hypotheses, 1)));

@@ -50,7 +50,8 @@ void sortByWeight(std::vector<TrackedHypothesis>* set);
 /// Merges every pair that has converged to the same pose; the stronger keeps its id.
 void mergeConverged(const TrackedSetConfig& config, std::vector<TrackedHypothesis>* set);
 
-/// Drops weak hypotheses and those beyond max_hypotheses, then normalises and sorts.
+/// Drops weak hypotheses (except newcomers, age 0, not yet judged by points) and those beyond
+/// max_hypotheses, then normalises and sorts.
 void pruneWeak(const TrackedSetConfig& config, std::vector<TrackedHypothesis>* set);
 
 /// True when b is within the tolerances of a's mirror (-x, -y, theta + pi).
