@@ -143,14 +143,13 @@ LocalizationEstimate Localizer::estimate() const {
   out.fallen = fallen_;
   out.points_in = tracker_.lastStats().points_in;
   out.points_used = tracker_.lastStats().points_used;
-  const TrackerConfig& tc = config_.tracker;
+  std::vector<GaussianPose> poses;
   for (const TrackedHypothesis& h : tracker_.hypotheses()) {
     out.hypotheses.push_back({h.pose, h.id, h.age_frames});
-    const Pose2& best = tracker_.hypotheses().front().pose.mean;
-    if (areMirrors(best, h.pose.mean, tc.mirror_tolerance_m, tc.mirror_tolerance_rad)) {
-      out.twin_weight += h.pose.weight;
-    }
+    poses.push_back(h.pose);
   }
+  out.twin_weight = mirrorTwinWeight(poses, config_.tracker.mirror_tolerance_m,
+                                     config_.tracker.mirror_tolerance_rad);
   return out;
 }
 

@@ -90,4 +90,15 @@ bool areMirrors(const Pose2& a, const Pose2& b, double tolerance_m, double toler
   return d.head<2>().norm() <= tolerance_m && std::abs(d.z()) <= tolerance_rad;
 }
 
+double mirrorTwinWeight(const std::vector<GaussianPose>& best_first, double tolerance_m,
+                        double tolerance_rad) {
+  double sum = 0.0;
+  for (const GaussianPose& p : best_first) {
+    if (areMirrors(best_first.front().mean, p.mean, tolerance_m, tolerance_rad)) {
+      sum += std::max(0.0, p.weight);
+    }
+  }
+  return sum;
+}
+
 }  // namespace houghloc
