@@ -1,5 +1,6 @@
 #include "localization/hypothesis_tracker.h"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 
@@ -110,22 +111,10 @@ void HypothesisTracker::correct(const GroundPoints& points) {
 }
 
 void HypothesisTracker::injectHypotheses(const std::vector<GaussianPose>& poses) {
-  std::vector<GaussianPose> weighted = poses;
-  for (GaussianPose& p : weighted) {
-    for (const TrackedHypothesis& h : hypotheses_) {
-      const bool established = h.age_frames >= config_.established_age_frames &&
-                               h.disagreeing_frames == 0 && !dropAlarm(h);
-      if (established && areMirrors(h.pose.mean, p.mean, config_.mirror_tolerance_m,
-                                    config_.mirror_tolerance_rad)) {
-        p.weight *= config_.established_mirror_factor;
-        break;
-      }
-    }
-  }
   // Asked only because the period passed: the best hypothesis agrees with the observations, so
   // a kidnap is unlikely and newcomers start small; a local view (one corner) fits several
   // places, and only history tells them apart.
-  addPoses(weighted, onlyPeriodic() ? config_.periodic_injected_share : config_.injected_share);
+  addPoses(poses, onlyPeriodic() ? config_.periodic_injected_share : config_.injected_share);
   markInjected();
 }
 
@@ -142,27 +131,54 @@ void HypothesisTracker::markInjected() {
 
 void HypothesisTracker::addPoses(const std::vector<GaussianPose>& poses, double share) {
   std::vector<GaussianPose> valid;
-  double sum = 0.0;
+  double max_likelihood = 0.0;
   for (GaussianPose p : poses) {
     if (!p.mean.isFinite()) continue;
     sanitizeCovariance(config_.motion, &p.covariance);
     p.weight = std::isfinite(p.weight) && p.weight > 0.0 ? p.weight : 0.0;
-    sum += p.weight;
+    max_likelihood = std::max(max_likelihood, p.weight);
     valid.push_back(p);
   }
   if (valid.empty()) return;
-  // With nothing tracked the new poses take all the weight; otherwise `share` of it.
+  // The one weight rule (docs/tracking.md "How weights flow"): share x belief x likelihood,
+  // the likelihood relative to the batch's best. With nothing tracked the belief is flat and the
+  // new poses take all the weight.
   const double total = hypotheses_.empty() ? 1.0 : std::clamp(share, 0.0, 1.0);
+  std::vector<double> weights;
+  for (const GaussianPose& p : valid) {
+    const double likelihood = max_likelihood > 0.0 ? p.weight / max_likelihood : 1.0;
+    weights.push_back(total * belief(p) * likelihood);
+  }
   normalizeTrackedWeights(&hypotheses_);
   for (auto& h : hypotheses_) h.pose.weight *= 1.0 - total;
-  for (const GaussianPose& p : valid) {
+  for (size_t k = 0; k < valid.size(); ++k) {
     TrackedHypothesis h;
-    h.pose = p;
-    h.pose.weight = total * (sum > 0.0 ? p.weight / sum : 1.0 / valid.size());
+    h.pose = valid[k];
+    h.pose.weight = weights[k];
     h.id = next_id_++;
     hypotheses_.push_back(h);
   }
   finishSet();
+}
+
+double HypothesisTracker::belief(const GaussianPose& pose) const {
+  if (hypotheses_.empty()) return 1.0;
+  double sum = 0.0;
+  for (const TrackedHypothesis& h : hypotheses_) sum += std::max(0.0, h.pose.weight);
+  if (!(sum > 0.0) || !std::isfinite(sum)) return 1.0;
+  const double spread_m = config_.belief_spread_m * config_.belief_spread_m;
+  const double spread_rad = config_.belief_spread_rad * config_.belief_spread_rad;
+  const Eigen::Matrix3d spread = Eigen::Vector3d(spread_m, spread_m, spread_rad).asDiagonal();
+  double density = 0.0;
+  for (const TrackedHypothesis& h : hypotheses_) {
+    const Eigen::Matrix3d s = h.pose.covariance + pose.covariance + spread;
+    const Eigen::Vector3d d = poseDifference(pose.mean, h.pose.mean);
+    const Eigen::LDLT<Eigen::Matrix3d> ldlt(s);
+    if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) continue;
+    const double chi2 = d.dot(ldlt.solve(d));
+    if (std::isfinite(chi2)) density += std::max(0.0, h.pose.weight) / sum * std::exp(-0.5 * chi2);
+  }
+  return std::clamp(std::max(config_.belief_floor, density), 0.0, 1.0);
 }
 
 void HypothesisTracker::finishSet() {

@@ -47,7 +47,8 @@ class HypothesisTracker {
   /// Corrects every hypothesis with the points (iterated EKF), re-weights, merges and prunes.
   void correct(const GroundPoints& points);
 
-  /// Adds global hypotheses (e.g. from the Hough localizer) with injected_share of the weight.
+  /// Adds global hypotheses (e.g. from the Hough localizer): weight = share x belief x likelihood
+  /// (TrackerConfig::belief_floor; share injected_share or periodic_injected_share).
   void injectHypotheses(const std::vector<GaussianPose>& poses);
   /// DESIGN §7 hints: UNKNOWN, RESET_TO, ADD, OWN_HALF, MIRROR.
   void applyHint(const LocalizationHint& hint);
@@ -67,7 +68,10 @@ class HypothesisTracker {
   const TrackerConfig& config() const { return config_; }
 
  private:
+  /// New hypotheses by the one weight rule; `share` is the set's share they may take at most.
   void addPoses(const std::vector<GaussianPose>& poses, double share);
+  /// The current mixture at `pose` (peak-normalised, 0..1, at least belief_floor); 1 when empty.
+  double belief(const GaussianPose& pose) const;
   void markInjected();
   bool bestIsLost() const;
   /// The hypothesis' inlier share dropped suddenly (share_drop above the alarm): kidnap suspect.

@@ -1,6 +1,5 @@
 #include "localization/localizer.h"
 
-#include <Eigen/Cholesky>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -33,45 +32,6 @@ std::vector<GaussianPose> toGaussianPoses(const std::vector<PoseHypothesis>& hyp
     if (pose.isFinite()) out.push_back(pose);
   }
   return out;
-}
-
-/// Multiplies each pose's weight by floor + the density of `prior` (a Gaussian mixture, peak
-/// of each component scaled to its weight relative to the best) at the pose, with the pose's own
-/// covariance added. Mirror twins differ only here.
-void weightByPrior(const std::vector<GaussianPose>& prior, double floor,
-                   std::vector<GaussianPose>* poses) {
-  double best_weight = 0.0;
-  for (const GaussianPose& h : prior) best_weight = std::max(best_weight, h.weight);
-  if (!(best_weight > 0.0)) return;
-  for (GaussianPose& p : *poses) {
-    double density = 0.0;
-    for (const GaussianPose& h : prior) {
-      const Eigen::Matrix3d s = h.covariance + p.covariance;
-      const Eigen::Vector3d d = poseDifference(p.mean, h.mean);
-      const Eigen::LDLT<Eigen::Matrix3d> ldlt(s);
-      if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) continue;
-      const double chi2 = d.dot(ldlt.solve(d));
-      if (!std::isfinite(chi2)) continue;
-      density = std::max(density, h.weight / best_weight * std::exp(-0.5 * chi2));
-    }
-    p.weight *= std::max(0.0, floor) + density;
-  }
-}
-
-/// Adds the mirror twin (-x, -y, theta + pi) of every pose whose twin is not in the list yet.
-/// The field is point-symmetric, so a twin fits the points as well as the pose; the global
-/// localizer's choice between them is arbitrary, and a prior can only tell them apart when both
-/// are weighed together (injected weights are normalised within a batch: a lone twin would get
-/// the batch's whole share whatever its prior).
-void addMirrorTwins(double tolerance_m, double tolerance_rad, std::vector<GaussianPose>* poses) {
-  const size_t n = poses->size();
-  for (size_t i = 0; i < n; ++i) {
-    const GaussianPose twin = mirrored((*poses)[i]);
-    const bool present = std::any_of(poses->begin(), poses->end(), [&](const GaussianPose& p) {
-      return areMirrors((*poses)[i].mean, p.mean, tolerance_m, tolerance_rad);
-    });
-    if (!present) poses->push_back(twin);
-  }
 }
 
 /// A camera close to the ground or tilted far from its upright pose: the robot has fallen.
@@ -135,8 +95,6 @@ LocalizationEstimate Localizer::process(std::int64_t t_us, const std::optional<P
   // views may be ambiguous: ask the global localizer until it has seen enough.
   if (was_fallen && !fallen_) {
     global_frames_pending_ = config_.global_frames_after_fall;
-    fall_prior_.clear();
-    for (const TrackedHypothesis& h : tracker_.hypotheses()) fall_prior_.push_back(h.pose);
   }
   const auto tracker_start = std::chrono::steady_clock::now();
   // A fallen robot's odometry is meaningless and its camera sees the sky or its own body: the
@@ -155,12 +113,9 @@ LocalizationEstimate Localizer::process(std::int64_t t_us, const std::optional<P
     const std::vector<PoseHypothesis> found = global_->locate(usable_points);
     global_ms = millisecondsSince(global_start);
     global_ran = true;
-    std::vector<GaussianPose> poses = toGaussianPoses(found, config_.max_injected_hypotheses);
-    if (global_frames_pending_ > 0) {
-      addMirrorTwins(config_.tracker.mirror_tolerance_m, config_.tracker.mirror_tolerance_rad,
-                     &poses);
-      weightByPrior(fall_prior_, config_.fall_prior_floor, &poses);
-    }
+    // The tracker weighs them by its belief (the pre-fall pose inflated by the fall's unknown
+    // motion after getting up): that tells the field's mirror twins apart.
+    const std::vector<GaussianPose> poses = toGaussianPoses(found, config_.max_injected_hypotheses);
     if (!poses.empty()) {
       const auto inject_start = std::chrono::steady_clock::now();
       tracker_.injectHypotheses(poses);
@@ -188,9 +143,13 @@ LocalizationEstimate Localizer::estimate() const {
   out.fallen = fallen_;
   out.points_in = tracker_.lastStats().points_in;
   out.points_used = tracker_.lastStats().points_used;
+  std::vector<GaussianPose> poses;
   for (const TrackedHypothesis& h : tracker_.hypotheses()) {
     out.hypotheses.push_back({h.pose, h.id, h.age_frames});
+    poses.push_back(h.pose);
   }
+  out.twin_weight = mirrorTwinWeight(poses, config_.tracker.mirror_tolerance_m,
+                                     config_.tracker.mirror_tolerance_rad);
   return out;
 }
 

@@ -32,11 +32,6 @@ struct LocalizerConfig {
   /// first views of a robot that just stood up are often local (one corner, parallel lines), so
   /// a wrong pose can fit them until the head turns.
   int global_frames_after_fall = 30;
-  /// Global poses found after getting up are weighted by how well the belief held before the fall
-  /// (inflated by the fall) explains them, plus this floor (a pose far outside that belief is
-  /// this much less likely than one at its centre). The field's mirror twins fit the points
-  /// equally well; where the robot fell tells which one it is. 0 would forbid large displacements.
-  double fall_prior_floor = 1e-3;
 };
 
 /// Status of an estimate (DESIGN §5.2 poses.csv, §7 pose_hypotheses_t).
@@ -60,6 +55,9 @@ struct LocalizationEstimate {
     if (hypotheses.empty()) return std::nullopt;
     return hypotheses.front().pose;
   }
+  /// Summed weight of the hypotheses at the best one's mirror twin (-x, -y, theta + pi, within
+  /// the tracker's mirror tolerances): how close the estimate is to flipping; 0 without any.
+  double twin_weight = 0.0;
   // Diagnostics for the status message (DESIGN §7 localizer_status_t) and the timing summary.
   int points_in = 0;
   int points_used = 0;
@@ -109,10 +107,8 @@ class Localizer {
   HypothesisTracker tracker_;
   std::int64_t last_t_us_ = 0;
   bool fallen_ = false;
+  /// Frames on which the global localizer runs even if the tracker does not ask (after a fall).
   int global_frames_pending_ = 0;
-  /// The tracker's hypotheses when the robot got up: the prior for the global poses after a fall.
-  std::vector<GaussianPose>
-      fall_prior_;  ///< run the global localizer even if the tracker does not ask
 };
 
 }  // namespace houghloc

@@ -114,8 +114,8 @@ ConfigSection trackerSection(TrackerConfig& c) {
                     HL_MEMBER(c, lost_sigma_m),          HL_MEMBER(c, periodic_global_s),
                     HL_MEMBER(c, lost_without_points_s), HL_MEMBER(c, mirror_tolerance_m),
                     HL_MEMBER(c, mirror_tolerance_rad),  HL_MEMBER(c, ambiguous_weight_ratio),
-                    HL_MEMBER(c, own_half_margin_m),     HL_MEMBER(c, established_mirror_factor),
-                    HL_MEMBER(c, established_age_frames)};
+                    HL_MEMBER(c, own_half_margin_m),     HL_MEMBER(c, belief_floor),
+                    HL_MEMBER(c, belief_spread_m),       HL_MEMBER(c, belief_spread_rad)};
   section.children = {
       {"motion",
        {{HL_MEMBER(c.motion, trans_var_per_m), HL_MEMBER(c.motion, trans_var_per_rad),
@@ -140,8 +140,7 @@ ConfigSection trackerSection(TrackerConfig& c) {
 ConfigSection localizerSection(LocalizerConfig& c) {
   ConfigSection section;
   section.fields = {HL_MEMBER(c, max_injected_hypotheses), HL_MEMBER(c, fallen_camera_height_m),
-                    HL_MEMBER(c, fallen_tilt_rad), HL_MEMBER(c, global_frames_after_fall),
-                    HL_MEMBER(c, fall_prior_floor)};
+                    HL_MEMBER(c, fallen_tilt_rad), HL_MEMBER(c, global_frames_after_fall)};
   return section;
 }
 

@@ -74,7 +74,10 @@ void pruneWeak(const TrackedSetConfig& config, std::vector<TrackedHypothesis>* s
   if (set->empty()) return;
   const double threshold = set->front().pose.weight * config.prune_relative_weight;
   set->erase(std::remove_if(set->begin() + 1, set->end(),
-                            [&](const TrackedHypothesis& h) { return h.pose.weight < threshold; }),
+                            [&](const TrackedHypothesis& h) {
+                              // Newcomers are judged by one frame of points before they can go.
+                              return h.age_frames > 0 && h.pose.weight < threshold;
+                            }),
              set->end());
   if (static_cast<int>(set->size()) > config.max_hypotheses) {
     set->resize(static_cast<size_t>(std::max(config.max_hypotheses, 1)));
@@ -85,6 +88,17 @@ void pruneWeak(const TrackedSetConfig& config, std::vector<TrackedHypothesis>* s
 bool areMirrors(const Pose2& a, const Pose2& b, double tolerance_m, double tolerance_rad) {
   const Eigen::Vector3d d = poseDifference(mirrored(a), b);
   return d.head<2>().norm() <= tolerance_m && std::abs(d.z()) <= tolerance_rad;
+}
+
+double mirrorTwinWeight(const std::vector<GaussianPose>& best_first, double tolerance_m,
+                        double tolerance_rad) {
+  double sum = 0.0;
+  for (const GaussianPose& p : best_first) {
+    if (areMirrors(best_first.front().mean, p.mean, tolerance_m, tolerance_rad)) {
+      sum += std::max(0.0, p.weight);
+    }
+  }
+  return sum;
 }
 
 }  // namespace houghloc

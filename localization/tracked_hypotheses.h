@@ -50,10 +50,16 @@ void sortByWeight(std::vector<TrackedHypothesis>* set);
 /// Merges every pair that has converged to the same pose; the stronger keeps its id.
 void mergeConverged(const TrackedSetConfig& config, std::vector<TrackedHypothesis>* set);
 
-/// Drops weak hypotheses and those beyond max_hypotheses, then normalises and sorts.
+/// Drops weak hypotheses (except newcomers, age 0, not yet judged by points) and those beyond
+/// max_hypotheses, then normalises and sorts.
 void pruneWeak(const TrackedSetConfig& config, std::vector<TrackedHypothesis>* set);
 
 /// True when b is within the tolerances of a's mirror (-x, -y, theta + pi).
 bool areMirrors(const Pose2& a, const Pose2& b, double tolerance_m, double tolerance_rad);
+
+/// Summed weight of the poses within the tolerances of the first (best) one's mirror twin: how
+/// close an estimate is to flipping (poses.csv `twin_weight`); 0 for an empty list.
+double mirrorTwinWeight(const std::vector<GaussianPose>& best_first, double tolerance_m,
+                        double tolerance_rad);
 
 }  // namespace houghloc

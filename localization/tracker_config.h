@@ -22,7 +22,8 @@ struct TrackerConfig {
   /// Differences of the mean per-point log-likelihood below this are ignored when hypotheses are
   /// compared (outliers near lines favour places with many lines by a few hundredths).
   double likelihood_deadband = 0.1;
-  /// Weight share of the set given to newly injected global hypotheses (the rest stays).
+  /// Weight share of the set given to newly injected global hypotheses (the rest stays), before
+  /// the belief factor (belief_floor below).
   double injected_share = 0.2;
   /// Same for the low-rate injections while the best hypothesis agrees with the observations.
   double periodic_injected_share = 0.02;
@@ -56,11 +57,20 @@ struct TrackerConfig {
   double mirror_tolerance_rad = 0.3;    ///< and in heading, rad
   double ambiguous_weight_ratio = 0.5;  ///< mirror weight >= this * best weight: AMBIGUOUS
   double own_half_margin_m = 0.5;       ///< OWN_HALF mirrors hypotheses with x > this, m
-  /// Continuity: an injected pose at the mirror of an established hypothesis (older than
-  /// established_age_frames, agreeing with the observations) gets this factor on its weight, so
-  /// low-rate injections do not re-create a symmetry the history already resolved.
-  double established_mirror_factor = 0.1;
-  int established_age_frames = 30;
+
+  // The one weight rule for new hypotheses (global runs, kidnap alarms, after a fall, ADD hints;
+  // docs/tracking.md "How weights flow"): weight = share x belief(pose) x own likelihood, where
+  // belief = max(belief_floor, sum_j w_j exp(-chi2_j / 2)) is the current mixture at the pose
+  // (peak-normalised, covariances of both plus the spread below added) and 1 without hypotheses.
+  /// Belief of a pose far from every hypothesis (relative to the best place): what a kidnap or a
+  /// wrong start costs. A mirror twin of a well-localized track starts here and, fed only by
+  /// injections that re-find it, cannot rise above it while the likelihood cannot tell them
+  /// apart. 0..1.
+  double belief_floor = 0.02;
+  /// Added to the covariances when the belief is evaluated (a placement by hand is decimetres
+  /// off whatever sigma it claims), m and rad (std).
+  double belief_spread_m = 0.5;
+  double belief_spread_rad = 0.5;
 };
 
 }  // namespace houghloc

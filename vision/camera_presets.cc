@@ -39,7 +39,7 @@ CameraIntrinsics naoIntrinsics() {
 }  // namespace
 
 std::vector<std::string> cameraPresetNames() {
-  return {"nao-top", "nao-bottom", "kid-wide", "adult"};
+  return {"nao-top", "nao-bottom", "kid-wide", "adult", "wide-pinhole"};
 }
 
 CameraPreset cameraPreset(const std::string& name) {
@@ -77,6 +77,13 @@ CameraPreset cameraPreset(const std::string& name) {
     preset.intrinsics = makeIntrinsics(1280, 720, 900.0, {-0.12, 0.05, 0.0008, -0.0005, -0.008},
                                        DistortionModel::kPinhole);
     preset.robot_T_camera = makePose(0.05, 1.40, 20.0 * kDeg);
+  } else if (name == "wide-pinhole") {
+    // A wide 16:9 pinhole camera without distortion (a webcam-class module on a small robot):
+    // 1024x576, f = 512 px, i.e. 90 deg horizontal and 59 deg vertical field of view. 0.50 m
+    // high, 0.05 m ahead, pitched 25 deg down: ground from 0.45 m out, horizon near row 49.
+    preset.intrinsics =
+        makeIntrinsics(1024, 576, 512.0, {0.0, 0.0, 0.0, 0.0, 0.0}, DistortionModel::kPinhole);
+    preset.robot_T_camera = makePose(0.05, 0.50, 25.0 * kDeg);
   } else {
     std::string known;
     for (const std::string& n : cameraPresetNames()) known += (known.empty() ? "" : ", ") + n;

@@ -15,7 +15,7 @@ struct CameraPreset {
   Pose3 robot_T_camera;
 };
 
-/// nao-top, nao-bottom, kid-wide, adult (issue 4).
+/// nao-top, nao-bottom, kid-wide, adult (issue 4), wide-pinhole.
 std::vector<std::string> cameraPresetNames();
 /// Throws std::invalid_argument naming the unknown preset and listing the known ones.
 CameraPreset cameraPreset(const std::string& name);

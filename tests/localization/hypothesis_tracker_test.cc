@@ -44,7 +44,11 @@ TEST_F(HypothesisTrackerTest, ResetAddMirrorOwnHalfAndUnknownHints) {
 
   tracker_.applyHint(hint(HintKind::kAdd, {gaussianAt(Pose2(-1.0, 0.0, 0.0), 1.0, 0.1, 0.1)}));
   ASSERT_EQ(tracker_.hypotheses().size(), 2u);
-  EXPECT_NEAR(tracker_.hypotheses()[0].pose.weight, 0.5, 1e-12);  // hint_add_share
+  // The one weight rule: hint_add_share x belief; (-1, 0, 0) is 3.2 m from the only hypothesis,
+  // so its belief is the floor. Normalised against the old pose's 1 - share:
+  const double share = tracker_.config().hint_add_share, floor = tracker_.config().belief_floor;
+  EXPECT_NEAR(tracker_.hypotheses()[1].pose.weight, share * floor / (1.0 - share + share * floor),
+              1e-12);
 
   // OWN_HALF: (2, 1, 0.3) lies in the opponent half; its mirror (-2, -1, 0.3 + pi) replaces it.
   tracker_.applyHint(hint(HintKind::kOwnHalf));

@@ -58,16 +58,18 @@ TEST_F(LocalizerTest, AddKeepsOldPosesAndAddsNewOnes) {
   const LocalizationEstimate e = localizer_.estimate();
   ASSERT_EQ(e.hypotheses.size(), 2u);
   EXPECT_NEAR(e.hypotheses[0].pose.weight + e.hypotheses[1].pose.weight, 1.0, 1e-12);
+  // The one weight rule: share x belief, the new pose 3.4 m from the old one: belief = floor.
   const double share = localizer_.config().tracker.hint_add_share;
+  const double added = share * localizer_.config().tracker.belief_floor;
   bool old_found = false, new_found = false;
   for (const EstimateHypothesis& h : e.hypotheses) {
     if (correctPose(h.pose.mean, Pose2(-1.0, 0.5, 0.2))) {
       old_found = true;
-      EXPECT_NEAR(h.pose.weight, 1.0 - share, 1e-9);
+      EXPECT_NEAR(h.pose.weight, (1.0 - share) / (1.0 - share + added), 1e-9);
     }
     if (correctPose(h.pose.mean, Pose2(2.0, -1.0, 1.0))) {
       new_found = true;
-      EXPECT_NEAR(h.pose.weight, share, 1e-9);
+      EXPECT_NEAR(h.pose.weight, added / (1.0 - share + added), 1e-9);
     }
   }
   EXPECT_TRUE(old_found && new_found);

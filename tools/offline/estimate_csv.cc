@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <map>
 
+#include "localization/tracked_hypotheses.h"
+#include "localization/tracker_config.h"
 #include "tools/recording/csv.h"
 #include "tools/recording/recording.h"
 
@@ -14,6 +16,9 @@ namespace fs = std::filesystem;
 
 const std::vector<std::string> kPosesHeader = {
     "t_us", "x", "y", "theta", "var_x", "var_y", "var_theta", "weight", "num_hypotheses", "status"};
+/// Written after kPosesHeader; not read back (twinWeight() recomputes it from hypotheses.csv,
+/// so folders written without it still read).
+const char* const kTwinWeightColumn = "twin_weight";
 const std::vector<std::string> kHypothesesHeader = {
     "t_us",  "rank",      "x",      "y",          "theta",      "var_x",
     "var_y", "var_theta", "cov_xy", "cov_xtheta", "cov_ytheta", "weight"};
@@ -65,13 +70,24 @@ std::map<std::int64_t, std::vector<std::pair<int, GaussianPose>>> readHypotheses
   return by_time;
 }
 
+std::vector<std::string> withTwinWeight(std::vector<std::string> header) {
+  header.push_back(kTwinWeightColumn);
+  return header;
+}
+
 }  // namespace
+
+double FrameEstimate::twinWeight() const {
+  const TrackerConfig defaults;
+  return mirrorTwinWeight(hypotheses, defaults.mirror_tolerance_m, defaults.mirror_tolerance_rad);
+}
 
 struct EstimateCsvWriter::Files {
   CsvWriter poses;
   CsvWriter hypotheses;
   Files(const std::string& dir)
-      : poses(posesPath(dir), kPosesHeader), hypotheses(hypothesesPath(dir), kHypothesesHeader) {}
+      : poses(posesPath(dir), withTwinWeight(kPosesHeader)),
+        hypotheses(hypothesesPath(dir), kHypothesesHeader) {}
 };
 
 EstimateCsvWriter::EstimateCsvWriter(const std::string& out_dir)
@@ -83,13 +99,14 @@ void EstimateCsvWriter::write(const FrameEstimate& estimate) {
   const std::string t = p.format(estimate.t_us);
   const std::string count = std::to_string(estimate.hypotheses.size());
   if (estimate.hypotheses.empty()) {
-    p.writeRow({t, "", "", "", "", "", "", "", count, estimate.status});
+    p.writeRow({t, "", "", "", "", "", "", "", count, estimate.status, "0"});
     return;
   }
   const GaussianPose& best = estimate.hypotheses.front();
   p.writeRow({t, p.format(best.mean.x), p.format(best.mean.y), p.format(best.mean.theta),
               p.format(best.covariance(0, 0)), p.format(best.covariance(1, 1)),
-              p.format(best.covariance(2, 2)), p.format(best.weight), count, estimate.status});
+              p.format(best.covariance(2, 2)), p.format(best.weight), count, estimate.status,
+              p.format(estimate.twinWeight())});
   for (size_t rank = 0; rank < estimate.hypotheses.size(); ++rank) {
     const GaussianPose& g = estimate.hypotheses[rank];
     const Eigen::Matrix3d& c = g.covariance;

@@ -14,10 +14,14 @@ struct FrameEstimate {
   std::int64_t t_us = 0;
   std::string status;                    ///< INITIALIZING, TRACKING, AMBIGUOUS or LOST
   std::vector<GaussianPose> hypotheses;  ///< rank order, best first; may be empty
+  /// Weight of the best pose's mirror twin (mirrorTwinWeight() with the tracker's default
+  /// mirror tolerances, 0.3 m / 0.3 rad): poses.csv `twin_weight`.
+  double twinWeight() const;
 };
 
-/// Writes OUT/poses.csv and OUT/hypotheses.csv with the exact headers of DESIGN §5.2 (a frame
-/// without hypotheses gets a poses.csv row with empty pose fields and num_hypotheses 0).
+/// Writes OUT/poses.csv and OUT/hypotheses.csv with the headers of DESIGN §5.2, poses.csv with a
+/// last column `twin_weight` (a frame without hypotheses gets a poses.csv row with empty pose
+/// fields, num_hypotheses 0 and twin_weight 0).
 /// Numbers are written so that readFrameEstimates() gets the same doubles back.
 class EstimateCsvWriter {
  public:

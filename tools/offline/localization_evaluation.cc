@@ -68,9 +68,12 @@ void printTracking(const TrackingMetrics& m) {
         m.median_position_error_m, m.median_heading_error_deg, m.p95_position_error_m,
         m.p95_heading_error_deg, m.max_position_error_m, m.max_heading_error_deg);
   }
-  std::printf("  correct          %s (up to symmetry %s), flipped frames %d\n",
-              percent(m.correct_rate, evaluated).c_str(),
-              percent(m.correct_up_to_symmetry_rate, evaluated).c_str(), m.flips);
+  std::printf(
+      "  correct          %s (up to symmetry %s), flipped frames %d, twin weight max %.3f "
+      "p95 %.3f\n",
+      percent(m.correct_rate, evaluated).c_str(),
+      percent(m.correct_up_to_symmetry_rate, evaluated).c_str(), m.flips, m.twin_weight_max,
+      m.twin_weight_p95);
   if (m.first_correct_frame >= 0) {
     std::printf("  first correct    frame %d (%.2f s)\n", m.first_correct_frame, m.first_correct_s);
   } else {
@@ -120,6 +123,8 @@ std::vector<std::string> plotNotes(const EvaluationResult& r) {
                              t->median_heading_error_deg));
     }
     notes.push_back("flipped frames " + std::to_string(t->flips));
+    notes.push_back(
+        format("twin weight max %.3f, p95 %.3f", t->twin_weight_max, t->twin_weight_p95));
     for (size_t i = 0; i < t->recovery_frames.size(); ++i) {
       const int n = t->recovery_frames[i];
       notes.push_back((t->recovery_events[i] == "KIDNAP" ? "kidnap: " : "fall: ") +
@@ -174,6 +179,8 @@ nlohmann::json toJson(const TrackingMetrics& m) {
   j["correct_rate"] = orNull(m.correct_rate, evaluated);
   j["correct_up_to_symmetry_rate"] = orNull(m.correct_up_to_symmetry_rate, evaluated);
   j["flips"] = m.flips;
+  j["twin_weight_max"] = orNull(m.twin_weight_max, evaluated);
+  j["twin_weight_p95"] = orNull(m.twin_weight_p95, evaluated);
   j["first_correct_frame"] = orNull(m.first_correct_frame, m.first_correct_frame >= 0);
   j["first_correct_s"] = orNull(m.first_correct_s, m.first_correct_frame >= 0);
   j["first_correct_up_to_symmetry_frame"] =

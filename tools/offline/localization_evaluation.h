@@ -45,7 +45,10 @@ struct TrackingMetrics {
   double median_position_error_up_to_symmetry_m = 0.0, p95_position_error_up_to_symmetry_m = 0.0;
   double correct_rate = 0.0;  ///< evaluated frames whose best pose is correct
   double correct_up_to_symmetry_rate = 0.0;
-  int flips = 0;                 ///< evaluated frames whose best pose is a flip (§5.3)
+  int flips = 0;  ///< evaluated frames whose best pose is a flip (§5.3)
+  /// Weight of the best pose's mirror twin over the evaluated frames (poses.csv twin_weight):
+  /// how close the run came to flipping; 0 without evaluated frames.
+  double twin_weight_max = 0.0, twin_weight_p95 = 0.0;
   int first_correct_frame = -1;  ///< frames from the first frame to the first correct best pose
                                  ///< (-1: never)
   double first_correct_s = -1.0;

@@ -81,7 +81,7 @@ std::optional<TrackingMetrics> computeTrackingMetrics(const OfflineContext& cont
     }
   }
 
-  std::vector<double> position, heading, position_sym;
+  std::vector<double> position, heading, position_sym, twin;
   int correct = 0, correct_sym = 0;
   for (size_t i = m.first_correct_frame < 0 ? frames.size() : m.first_correct_frame;
        i < frames.size(); ++i) {
@@ -93,6 +93,7 @@ std::optional<TrackingMetrics> computeTrackingMetrics(const OfflineContext& cont
       continue;
     }
     const Pose2& best = f.best()->mean;
+    twin.push_back(f.estimate->twinWeight());
     const PoseError e = poseError(best, *f.truth);
     position.push_back(e.position_m);
     heading.push_back(degrees(e.heading_rad));
@@ -105,6 +106,8 @@ std::optional<TrackingMetrics> computeTrackingMetrics(const OfflineContext& cont
   m.p95_position_error_m = percentile(position, 0.95);
   m.max_position_error_m =
       position.empty() ? 0.0 : *std::max_element(position.begin(), position.end());
+  m.twin_weight_max = twin.empty() ? 0.0 : *std::max_element(twin.begin(), twin.end());
+  m.twin_weight_p95 = percentile(twin, 0.95);
   m.median_heading_error_deg = median(heading);
   m.p95_heading_error_deg = percentile(heading, 0.95);
   m.max_heading_error_deg =

@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
       app.add_option("--standard", standard, "standard field: spl, spl2019, kid, adult, msl");
   field_opt->excludes(standard_opt);
   app.add_option("--camera", camera,
-                 "preset (nao-top, nao-bottom, kid-wide, adult), nao (top and bottom taking turns, "
+                 "preset (nao-top, nao-bottom, kid-wide, adult, wide-pinhole), nao (top and bottom taking turns, "
                  "as on the robot) or camera.yaml");
   auto* traj_opt = app.add_option("--trajectory", trajectory,
                                   "built-in: walk, spin, kidnap, fall, random-poses");

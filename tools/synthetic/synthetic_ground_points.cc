@@ -114,7 +114,7 @@ ViewModel viewModel(const std::string& name) {
   if (name == "kid-wide") return {name, 60.0 * deg, 0.3, 5.0, 0.90, 0.0016};
   if (name == "adult") return {name, 35.0 * deg, 0.6, 7.0, 1.40, 0.0011};
   throw std::invalid_argument("unknown view model '" + name +
-                              "' (known: nao-top, nao-bottom, kid-wide, adult)");
+                              "' (known: nao-top, nao-bottom, kid-wide, adult, wide-pinhole)");
 }
 
 SyntheticFrame generateFrame(const FieldModel& field, const Pose2& field_T_robot,

@@ -84,12 +84,13 @@ TEST_F(EstimateCsvTest, RoundTripIsExactAndHeadersAreTheDesignOnes) {
   }
   const auto poses = lines("poses.csv");
   const auto hypotheses = lines("hypotheses.csv");
-  EXPECT_EQ(poses.at(0), "t_us,x,y,theta,var_x,var_y,var_theta,weight,num_hypotheses,status");
+  EXPECT_EQ(poses.at(0),
+            "t_us,x,y,theta,var_x,var_y,var_theta,weight,num_hypotheses,status,twin_weight");
   EXPECT_EQ(hypotheses.at(0),
             "t_us,rank,x,y,theta,var_x,var_y,var_theta,cov_xy,cov_xtheta,cov_ytheta,weight");
   EXPECT_EQ(poses.size(), 41u);
   // Frame 3 has no hypotheses: empty pose fields and num_hypotheses 0.
-  EXPECT_EQ(poses.at(4), std::to_string(written[3].t_us) + ",,,,,,,,0,LOST");
+  EXPECT_EQ(poses.at(4), std::to_string(written[3].t_us) + ",,,,,,,,0,LOST,0");
 
   const std::vector<FrameEstimate> read = readFrameEstimates(dir_);
   ASSERT_EQ(read.size(), written.size());
@@ -168,6 +169,35 @@ TEST_F(EstimateCsvTest, UnwritableFolderNamesTheFile) {
   } catch (const RecordingError& e) {
     EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace houghloc
+
+namespace houghloc {
+namespace {
+
+TEST_F(EstimateCsvTest, TwinWeightColumnIsTheWeightAtTheBestPosesMirror) {
+  FrameEstimate e;
+  e.t_us = 100;
+  e.status = "AMBIGUOUS";
+  GaussianPose best, twin, other;
+  best.mean = Pose2(1.0, 2.0, 0.5);
+  best.weight = 0.6;
+  twin.mean = Pose2(-1.1, -2.0, 0.5 + M_PI);  // 0.1 m from the mirror: counts
+  twin.weight = 0.25;
+  other.mean = Pose2(-1.0, -2.0, 0.5);  // mirrored position, same heading: not a twin
+  other.weight = 0.15;
+  e.hypotheses = {best, twin, other};
+  EXPECT_DOUBLE_EQ(e.twinWeight(), 0.25);
+  {
+    EstimateCsvWriter writer(dir_);
+    writer.write(e);
+    writer.close();
+  }
+  const std::string row = lines("poses.csv").at(1);
+  EXPECT_DOUBLE_EQ(std::stod(row.substr(row.rfind(',') + 1)), 0.25);
+  EXPECT_DOUBLE_EQ(readFrameEstimates(dir_).at(0).twinWeight(), 0.25);
 }
 
 }  // namespace

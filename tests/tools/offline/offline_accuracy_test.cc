@@ -44,7 +44,7 @@ TEST_P(OfflineAccuracy, FullRunMeetsTheTargetsAndIsReproducible) {
   std::printf("%s\n", r.output.c_str());
 
   EXPECT_EQ(firstLine(out / "poses.csv"),
-            "t_us,x,y,theta,var_x,var_y,var_theta,weight,num_hypotheses,status");
+            "t_us,x,y,theta,var_x,var_y,var_theta,weight,num_hypotheses,status,twin_weight");
   EXPECT_EQ(firstLine(out / "hypotheses.csv"),
             "t_us,rank,x,y,theta,var_x,var_y,var_theta,cov_xy,cov_xtheta,cov_ytheta,weight");
   EXPECT_EQ(

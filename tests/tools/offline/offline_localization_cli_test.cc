@@ -6,7 +6,7 @@ namespace houghloc {
 namespace {
 
 const char* const kPosesHeader =
-    "t_us,x,y,theta,var_x,var_y,var_theta,weight,num_hypotheses,status";
+    "t_us,x,y,theta,var_x,var_y,var_theta,weight,num_hypotheses,status,twin_weight";
 const char* const kHypothesesHeader =
     "t_us,rank,x,y,theta,var_x,var_y,var_theta,cov_xy,cov_xtheta,cov_ytheta,weight";
 
