@@ -11,6 +11,7 @@ PACKAGES=(
   liblcm-dev liblcm-bin libglib2.0-dev
   googletest libgtest-dev libbenchmark-dev
   iproute2 util-linux
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev
 )
 
 missing=()

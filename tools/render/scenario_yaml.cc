@@ -3,6 +3,7 @@
 #include <opencv2/core.hpp>
 #include <stdexcept>
 
+#include "field_models/yaml_indentation.h"
 #include "tools/render/scenario.h"
 #include "tools/render/yaml_map.h"
 
@@ -181,6 +182,7 @@ void section(YamlMap& top, const char* key, Fn fn) {
 }  // namespace
 
 Scenario loadScenario(const std::string& path) {
+  checkYamlIndentation(readTextFile(path), path);  // FileStorage hangs on some bad indentation
   cv::FileStorage fs;
   try {
     fs.open(path, cv::FileStorage::READ);
