@@ -19,9 +19,15 @@ void checkYamlIndentation(const std::string& text, const std::string& source_nam
     if (indent == std::string::npos || line[indent] == '#') continue;
     if (first_line == 0) {
       if (line[indent] == '{') return;  // JSON
-      if (line[indent] == '%' || line.compare(indent, 3, "---") == 0) continue;
+      if (line[indent] == '%') continue;
+      std::size_t content = indent;
+      if (line.compare(indent, 3, "---") == 0) {
+        // "--- key: value" starts the document with content at its column
+        content = line.find_first_not_of(" \t\r", indent + 3);
+        if (content == std::string::npos || line[content] == '#') continue;
+      }
       first_line = number;
-      first_indent = indent;
+      first_indent = content;
     } else if (indent < first_indent) {
       throw FormatError(source_name + ":" + std::to_string(number) +
                         ": indented less than the first key (line " + std::to_string(first_line) +

@@ -30,6 +30,14 @@ std::vector<double> readNumbers(const cv::FileNode& node, const std::string& pat
   std::vector<double> values;
   if (node.isMap()) {
     if (node["data"].empty()) fail(path, key, "not an OpenCV matrix (rows, cols, dt, data)");
+    // Checked before OpenCV reads it: a non-integer cols made it allocate 48 GB (tests/fuzz).
+    const cv::FileNode rows = node["rows"], cols = node["cols"];
+    if (!rows.isInt() || !cols.isInt() || static_cast<int>(rows) < 1 ||
+        static_cast<int>(cols) < 1 ||
+        static_cast<std::size_t>(static_cast<int>(rows)) * static_cast<int>(cols) !=
+            node["data"].size()) {
+      fail(path, key, "rows and cols must be positive integers whose product is the data count");
+    }
     cv::Mat mat;
     try {
       node >> mat;

@@ -1,5 +1,6 @@
 // Scenario YAML schema (docs/render.md): one reader per config struct, keys = member names.
 #include <cmath>
+#include <fstream>
 #include <opencv2/core.hpp>
 #include <stdexcept>
 
@@ -182,10 +183,16 @@ void section(YamlMap& top, const char* key, Fn fn) {
 }  // namespace
 
 Scenario loadScenario(const std::string& path) {
-  checkYamlIndentation(readTextFile(path), path);  // FileStorage hangs on some bad indentation
+  if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot open scenario file");
+  std::string text = readTextFile(path);
+  checkYamlIndentation(text, path);  // FileStorage hangs on some bad indentation
+  // Like the offline config: a hand-written file without the "%YAML:1.0" line is accepted too.
+  if (text.find_first_not_of(" \t\r\n") != std::string::npos && text.rfind("%YAML", 0) != 0) {
+    text = "%YAML:1.0\n---\n" + text;
+  }
   cv::FileStorage fs;
   try {
-    fs.open(path, cv::FileStorage::READ);
+    fs.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
   } catch (const cv::Exception& e) {
     throw std::runtime_error(path + ": cannot parse scenario (" + e.err + ")");
   }
