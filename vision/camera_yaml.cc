@@ -76,6 +76,8 @@ CameraIntrinsics loadCameraYaml(const std::string& path) {
     throw std::runtime_error(path + ": cannot parse camera file: " + e.what());
   }
   const cv::FileNode root = fs.root();
+  // operator[] of a non-map node throws a cv::Exception without the file (tests/fuzz).
+  if (!root.isMap()) throw std::runtime_error(path + ": expected a map of keys at the top level");
   CameraIntrinsics in;
   in.image_width = readPositiveInt(root, path, "image_width");
   in.image_height = readPositiveInt(root, path, "image_height");
