@@ -11,6 +11,16 @@ if(HOUGHLOC_SANITIZE)
   target_link_options(houghloc_options INTERFACE -fsanitize=address,undefined)
 endif()
 
+# libFuzzer targets of tests/fuzz (clang only; the `fuzz` preset). Every library gets the
+# fuzzer's coverage instrumentation; the targets themselves link -fsanitize=fuzzer.
+option(HOUGHLOC_BUILD_FUZZ "Build the libFuzzer targets of tests/fuzz (clang)" OFF)
+if(HOUGHLOC_BUILD_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "HOUGHLOC_BUILD_FUZZ needs clang (e.g. -DCMAKE_CXX_COMPILER=clang++-14)")
+  endif()
+  target_compile_options(houghloc_options INTERFACE -fsanitize=fuzzer-no-link)
+endif()
+
 # houghloc_add_library(NAME SOURCES ... DEPS ...): one library per folder (DESIGN §2).
 function(houghloc_add_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})

@@ -1,3 +1,9 @@
+# Where the rendered test fixtures live (tests/*/render_fixtures.cmake render them once per folder,
+# a .complete stamp per fixture). A sanitizer or fuzz tree points it at the Release tree's folder,
+# e.g. -DHOUGHLOC_FIXTURE_DIR=$PWD/build/fixtures, and so renders nothing again.
+set(HOUGHLOC_FIXTURE_DIR "${PROJECT_BINARY_DIR}/fixtures" CACHE PATH
+  "Folder of the rendered test fixtures (shared between build trees)")
+
 # houghloc_add_test(NAME LABELS unit|accuracy|slow SOURCES ... DEPS ... [TIMEOUT s])
 # Builds one GoogleTest binary and registers each test case with ctest under the given labels.
 function(houghloc_add_test name)

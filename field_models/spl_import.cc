@@ -131,6 +131,13 @@ Json parseStrict(const std::string& text, const std::string& source) {
     const std::size_t colon = reason.rfind(": ");  // drop nlohmann's "[json.exception...]" prefix
     if (colon != std::string::npos) reason = reason.substr(colon + 2);
     throw FormatError(source + ": invalid JSON at " + position(text, e.byte) + ": " + reason);
+  } catch (const Json::out_of_range& e) {
+    // A number beyond a double (1e309): nlohmann gives neither the position nor the key.
+    std::string reason = e.what();
+    const std::size_t bracket = reason.find("] ");
+    if (bracket != std::string::npos) reason = reason.substr(bracket + 2);
+    throw FormatError(source + ": invalid JSON" +
+                      (last_key.empty() ? "" : " after key '" + last_key + "'") + ": " + reason);
   }
 }
 

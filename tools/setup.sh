@@ -12,6 +12,7 @@ PACKAGES=(
   googletest libgtest-dev libbenchmark-dev
   iproute2 util-linux
   qtbase5-dev xvfb
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev
 )
 
 missing=()

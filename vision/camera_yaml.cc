@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "field_models/yaml_indentation.h"
 #include "vision/camera_model.h"
 
 namespace houghloc {
@@ -29,6 +30,14 @@ std::vector<double> readNumbers(const cv::FileNode& node, const std::string& pat
   std::vector<double> values;
   if (node.isMap()) {
     if (node["data"].empty()) fail(path, key, "not an OpenCV matrix (rows, cols, dt, data)");
+    // Checked before OpenCV reads it: a non-integer cols made it allocate 48 GB (tests/fuzz).
+    const cv::FileNode rows = node["rows"], cols = node["cols"];
+    if (!rows.isInt() || !cols.isInt() || static_cast<int>(rows) < 1 ||
+        static_cast<int>(cols) < 1 ||
+        static_cast<std::size_t>(static_cast<int>(rows)) * static_cast<int>(cols) !=
+            node["data"].size()) {
+      fail(path, key, "rows and cols must be positive integers whose product is the data count");
+    }
     cv::Mat mat;
     try {
       node >> mat;
@@ -57,6 +66,7 @@ std::vector<double> readNumbers(const cv::FileNode& node, const std::string& pat
 CameraIntrinsics loadCameraYaml(const std::string& path) {
   // Checked first because OpenCV logs to stderr when it cannot open a file (libraries stay quiet).
   if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot open camera file");
+  checkYamlIndentation(readTextFile(path), path);  // FileStorage hangs on some bad indentation
   cv::FileStorage fs;
   try {
     if (!fs.open(path, cv::FileStorage::READ)) {
@@ -66,6 +76,8 @@ CameraIntrinsics loadCameraYaml(const std::string& path) {
     throw std::runtime_error(path + ": cannot parse camera file: " + e.what());
   }
   const cv::FileNode root = fs.root();
+  // operator[] of a non-map node throws a cv::Exception without the file (tests/fuzz).
+  if (!root.isMap()) throw std::runtime_error(path + ": expected a map of keys at the top level");
   CameraIntrinsics in;
   in.image_width = readPositiveInt(root, path, "image_width");
   in.image_height = readPositiveInt(root, path, "image_height");

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "field_models/field_validation.h"
 #include "field_models/field_yaml.h"
 #include "field_models/standard_fields.h"
 #include "tools/offline/hint_conversion.h"
@@ -37,6 +38,13 @@ OfflineContext loadOfflineContext(const OfflineOptions& options) {
   context.recording = readRecording(options.folder);
   if (!options.field_file.empty()) {
     context.field = readFieldYaml(options.field_file);
+    // A map that fails validation (a zero-length segment, say) localizes wrongly without a sign.
+    const std::vector<FieldIssue> issues = validateField(*context.field);
+    if (!issues.empty()) {
+      throw std::runtime_error(options.field_file + ": " + issues.front().toString() + " (" +
+                               std::to_string(issues.size()) +
+                               " issue(s), houghloc-fieldmap validate lists them)");
+    }
   } else if (!options.standard.empty()) {
     try {
       context.field = makeStandardField(options.standard);

@@ -15,9 +15,11 @@ namespace fs = std::filesystem;
 const std::set<std::string> kHintKinds = {"UNKNOWN", "RESET_TO", "ADD", "OWN_HALF", "MIRROR"};
 const std::set<std::string> kEvents = {"KIDNAP", "FALL_START", "FALL_END"};
 
-/// Calls `parse` for each row after checking that t_us does not go backwards.
+/// Calls `parse` for each row after checking that t_us does not go backwards and, when
+/// `strictly_increasing`, does not repeat either.
 void forEachTimedRow(const CsvTable& table,
-                     const std::function<void(const CsvRow&, std::int64_t)>& parse) {
+                     const std::function<void(const CsvRow&, std::int64_t)>& parse,
+                     bool strictly_increasing = false) {
   const int t_column = table.column("t_us");
   bool first = true;
   std::int64_t previous = 0;
@@ -26,6 +28,9 @@ void forEachTimedRow(const CsvTable& table,
     if (!first && t_us < previous) {
       table.fail(row, "t_us goes backwards (" + std::to_string(t_us) + " after " +
                           std::to_string(previous) + ")");
+    }
+    if (!first && strictly_increasing && t_us == previous) {
+      table.fail(row, "t_us repeats the previous row's (" + std::to_string(t_us) + ")");
     }
     first = false;
     previous = t_us;
@@ -70,9 +75,12 @@ std::vector<FrameRecord> readFrames(const CsvTable& t) {
 std::vector<GroundTruthRecord> readGroundTruth(const CsvTable& t) {
   std::vector<GroundTruthRecord> truth;
   const int x = t.column("x"), y = t.column("y"), theta = t.column("theta");
-  forEachTimedRow(t, [&](const CsvRow& row, std::int64_t t_us) {
-    truth.push_back({t_us, Pose2(t.number(row, x), t.number(row, y), t.number(row, theta))});
-  });
+  forEachTimedRow(
+      t,
+      [&](const CsvRow& row, std::int64_t t_us) {
+        truth.push_back({t_us, Pose2(t.number(row, x), t.number(row, y), t.number(row, theta))});
+      },
+      /*strictly_increasing=*/true);  // one robot has one pose at a time
   return truth;
 }
 

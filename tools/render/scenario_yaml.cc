@@ -1,8 +1,10 @@
 // Scenario YAML schema (docs/render.md): one reader per config struct, keys = member names.
 #include <cmath>
+#include <fstream>
 #include <opencv2/core.hpp>
 #include <stdexcept>
 
+#include "field_models/yaml_indentation.h"
 #include "tools/render/scenario.h"
 #include "tools/render/yaml_map.h"
 
@@ -180,10 +182,19 @@ void section(YamlMap& top, const char* key, Fn fn) {
 
 }  // namespace
 
-Scenario loadScenario(const std::string& path) {
+namespace {
+
+Scenario readScenarioFile(const std::string& path) {
+  if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot open scenario file");
+  std::string text = readTextFile(path);
+  checkYamlIndentation(text, path);  // FileStorage hangs on some bad indentation
+  // Like the offline config: a hand-written file without the "%YAML:1.0" line is accepted too.
+  if (text.find_first_not_of(" \t\r\n") != std::string::npos && text.rfind("%YAML", 0) != 0) {
+    text = "%YAML:1.0\n---\n" + text;
+  }
   cv::FileStorage fs;
   try {
-    fs.open(path, cv::FileStorage::READ);
+    fs.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
   } catch (const cv::Exception& e) {
     throw std::runtime_error(path + ": cannot parse scenario (" + e.err + ")");
   }
@@ -268,6 +279,18 @@ Scenario loadScenario(const std::string& path) {
     throw std::runtime_error(path + ": " + e.what());
   }
   return s;
+}
+
+}  // namespace
+
+Scenario loadScenario(const std::string& path) {
+  try {
+    return readScenarioFile(path);
+  } catch (const std::length_error& e) {
+    // OpenCV 4.6 hands out a garbage string for some malformed keys (tests/fuzz/scenario_yaml
+    // found one in 61 s): report it against the file instead of as "basic_string::_M_create".
+    throw std::runtime_error(path + ": malformed key or value (" + e.what() + ")");
+  }
 }
 
 }  // namespace houghloc

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of tests/fuzz (the `fuzz` preset: clang-14, ASan + UBSan, in
+# build-fuzz/) and runs them, each for SECONDS (default 30), on a copy of its seed corpus
+# tests/fuzz/corpus/<target>/ (new inputs go to build-fuzz/corpus/<target>/, crashes to
+# build-fuzz/crashes/<target>/). Exits non-zero when a target finds a crash, leak or timeout:
+# copy the input into tests/fuzz/corpus/<target>/ so fuzz_replay_<target> keeps it as a test.
+#   tools/fuzz.sh [TARGET|all] [SECONDS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+TARGETS=(field_yaml spl_json camera_yaml recording_csv scenario_yaml vision localizer)
+WHICH=${1:-all}
+SECONDS_PER_TARGET=${2:-30}
+BUILD_DIR=${HOUGHLOC_FUZZ_BUILD_DIR:-build-fuzz}
+if [[ $WHICH != all ]]; then TARGETS=("$WHICH"); fi
+
+if ! command -v clang++-14 >/dev/null; then
+  echo "fuzz: clang++-14 missing (tools/setup.sh installs clang-14 and libfuzzer-14-dev)" >&2
+  exit 1
+fi
+cmake --preset fuzz -DHOUGHLOC_BUILD_TESTS=ON >/dev/null
+names=()
+for t in "${TARGETS[@]}"; do names+=("${t}_fuzz"); done
+LOG="$BUILD_DIR/fuzz-build.log"
+if ! cmake --build "$BUILD_DIR" -j "${HOUGHLOC_JOBS:-$(nproc)}" --target "${names[@]}" >"$LOG" 2>&1; then
+  grep -E -B2 -A8 "error" "$LOG" | head -n 100 >&2
+  echo "fuzz: build failed, full log in $LOG" >&2
+  exit 1
+fi
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:detect_leaks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+status=0
+for t in "${TARGETS[@]}"; do
+  corpus="$BUILD_DIR/corpus/$t"
+  crashes="$BUILD_DIR/crashes/$t"
+  mkdir -p "$corpus" "$crashes"
+  cp -n tests/fuzz/corpus/"$t"/* "$corpus"/
+  start=$(date +%s)
+  if "$BUILD_DIR/tests/fuzz/${t}_fuzz" -max_total_time="$SECONDS_PER_TARGET" -timeout=10 \
+      -rss_limit_mb=2048 -max_len=65536 -artifact_prefix="$crashes/" -print_final_stats=1 \
+      "$corpus" >"$BUILD_DIR/fuzz-$t.log" 2>&1; then
+    result=ok
+  else
+    result="FOUND (see $BUILD_DIR/fuzz-$t.log, inputs in $crashes/)"
+    status=1
+  fi
+  runs=$(grep -oE "stat::number_of_executed_units: *[0-9]+" "$BUILD_DIR/fuzz-$t.log" | grep -oE "[0-9]+$" || echo "?")
+  echo "fuzz: $t $(( $(date +%s) - start )) s, $runs runs, corpus $(ls "$corpus" | wc -l): $result"
+done
+exit $status
