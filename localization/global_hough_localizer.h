@@ -45,10 +45,9 @@ class GlobalHoughLocalizer {
   /// the refinement).
   void scoreCandidates(std::vector<PoseHypothesis>& candidates, const WeightedPoints& points,
                        const VisibilityEvidence* evidence = nullptr) const;
-  /// Step 4 refinement of one survivor (after convergeCandidates, which runs the coarse
-  /// iterations): Gauss-Newton, observability (kParallel when only parallel
-  /// lines constrain it; then a scan along the lines places the mean), covariance, final score
-  /// including negative evidence.
+  /// Step 4 refinement of one survivor (after the coarse iterations of converge()):
+  /// Gauss-Newton, observability (kParallel when only parallel lines constrain it; then a scan
+  /// along the lines places the mean), covariance, final score including negative evidence.
   /// A kParallel candidate can come back as several hypotheses, one per stretch of the lines
   /// where the points fit equally well; `line_scans` counts those scans (at most
   /// config.max_line_scans per frame, further parallel-only candidates are dropped).
@@ -58,8 +57,42 @@ class GlobalHoughLocalizer {
                                               int* line_scans) const;
 
  private:
-  double totalScore(const Pose2& pose, const WeightedPoints& points,
-                    const VisibilityEvidence& evidence, double* penalty = nullptr) const;
+  /// What the stages of locate() hand on to each other (global_locate_state.h).
+  struct LocateState;
+
+  // The stages of locate(), in the order it runs them.
+  /// Steps 3-4 for one heading: the poses the constraints give, on the carpet, and every 1-D
+  /// line candidate (kept for parallel-only frames).
+  void addPoseCandidates(double theta_r,
+                         const std::vector<std::vector<TranslationConstraint>>& constraints,
+                         LocateState& s) const;
+  void addLandmarkPoses(LocateState& s) const;
+  /// Drops the field edge unless a candidate explains it (see max_best_cost), so that it cannot
+  /// shift every score by the same penalty.
+  void gateFieldEdge(LocateState& s) const;
+  /// The paper's case M = 0: heading-only hypotheses ranked by their Hough support.
+  std::vector<PoseHypothesis> headingOnly(LocateState& s) const;
+  /// Step 4 scoring, in two rounds: a quarter of the pre-score points ranks all candidates, the
+  /// best few times `keep` are scored with all pre-score points, then pruned by segment extents.
+  void scoreAndPrune(LocateState& s) const;
+  /// Coarse Gauss-Newton of every pruned candidate on the pre-score points; keeps one of each
+  /// group that converged to the same pose, best score first.
+  void converge(LocateState& s) const;
+  /// refineCandidate() of every survivor, on the refinement points.
+  void refineSurvivors(LocateState& s) const;
+  /// Merges duplicates, full poses and 1-D hypotheses apart: a full pose near a 1-D hypothesis'
+  /// mean is not its duplicate (it says where along the line, which the 1-D one does not).
+  void mergeRefined(LocateState& s) const;
+  /// Parallel-only frames: everyLineHypotheses() joined to the merged hypotheses; a new 1-D
+  /// hypothesis replaces a weaker one on the same line.
+  void addEveryLine(LocateState& s) const;
+  /// At most config.max_hypotheses, sorted, weights normalised. On a point-symmetric map a pose
+  /// and its twin (-x, -y, theta + pi) explain every frame equally well: with more distinct
+  /// hypotheses than slots, each pair is represented once (best first) before twins fill the
+  /// slots that are left.
+  std::vector<PoseHypothesis> selectHypotheses(LocateState& s) const;
+
+  // Parts of the stages.
   std::vector<PoseHypothesis> placeAlongLines(const PoseHypothesis& candidate,
                                               const WeightedPoints& points,
                                               const VisibilityEvidence& evidence) const;
@@ -77,11 +110,8 @@ class GlobalHoughLocalizer {
   void finish(PoseHypothesis& candidate, const WeightedPoints& points,
               const VisibilityEvidence& evidence) const;
   bool onCarpet(const Pose2& pose) const;
-  /// Coarse Gauss-Newton of every pruned candidate on the subsample `few`; keeps one of each
-  /// group that converged to the same pose, best subsample score first.
-  std::vector<PoseHypothesis> convergeCandidates(std::vector<PoseHypothesis> candidates,
-                                                 const WeightedPoints& few,
-                                                 const VisibilityEvidence& evidence) const;
+  /// The hypothesis-set config without a cap on the number (for merging).
+  HypothesisSetConfig uncapped() const;
   /// Headings (best local maxima of the score) for rotations of the view about a landmark seen
   /// at p_robot and mapped to p_field.
   std::vector<OrientationCandidate> scanHeadings(const Eigen::Vector2d& p_robot,

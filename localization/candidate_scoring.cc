@@ -1,0 +1,82 @@
+// Step 4 of GlobalHoughLocalizer before the refinement: every candidate scored against the whole
+// map, pruned by segment extents, and one kept per optimum of a coarse Gauss-Newton.
+#include <algorithm>
+#include <cmath>
+
+#include "localization/global_locate_state.h"
+
+namespace houghloc {
+namespace {
+
+// Candidates whose coarse refinement ends this close are the same optimum.
+constexpr double kConvergedM = 0.03;
+constexpr double kConvergedRad = 0.01;
+// Candidates kept after the cheap first scoring round, in multiples of PruningConfig::keep.
+constexpr int kFirstRoundShare = 4;
+// Gauss-Newton iterations of the coarse stage (on the pre-score subsample).
+constexpr int kCoarseIterations = 6;
+
+}  // namespace
+
+void GlobalHoughLocalizer::scoreAndPrune(LocateState& s) const {
+  std::vector<PoseHypothesis>& located = s.located;
+  const std::size_t kept = static_cast<std::size_t>(kFirstRoundShare * config_.pruning.keep);
+  if (located.size() > kept) {
+    scoreCandidates(located, subsamplePoints(s.points, config_.prescore_points / 4), &s.evidence);
+    // Sort indices, not the structs; same order as a stable sort of the candidates.
+    std::vector<std::size_t> order(located.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return located[a].score > located[b].score;
+    });
+    std::vector<PoseHypothesis> best;
+    best.reserve(kept);
+    for (std::size_t k = 0; k < kept; ++k) best.push_back(std::move(located[order[k]]));
+    located.swap(best);
+  }
+  scoreCandidates(located, s.few, &s.evidence);
+  located = pruneCandidates(std::move(located), config_.pruning);
+}
+
+void GlobalHoughLocalizer::converge(LocateState& s) const {
+  // Gauss-Newton on the subsample first: candidates from different Hough peaks often converge
+  // to the same optimum, and only distinct optima need the full refinement.
+  RefinementConfig coarse = config_.refinement;
+  coarse.max_distance_m *= 1.5;
+  coarse.iterations = std::min(coarse.iterations, kCoarseIterations);
+  coarse.converged_m = 1e-3;  // the fine stage follows
+  std::vector<PoseHypothesis>& candidates = s.located;
+  for (PoseHypothesis& c : candidates) {
+    const Eigen::Vector2d frozen =
+        c.kind == HypothesisKind::kParallel ? c.line_direction : Eigen::Vector2d::Zero();
+    c.field_T_robot = refinePoseMean(s.few, c.field_T_robot, map_, coarse, frozen);
+    c.score = scorePose(s.few, c.field_T_robot, map_.grid(), config_.scoring).score -
+              s.evidence.edgePenalty(c.field_T_robot, map_.field());
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& a, const auto& b) { return a.score > b.score; });
+  std::vector<PoseHypothesis> out;
+  for (PoseHypothesis& c : candidates) {
+    bool same = false;
+    for (const PoseHypothesis& k : out) {
+      same |=
+          k.kind == c.kind &&
+          (k.field_T_robot.translation() - c.field_T_robot.translation()).norm() < kConvergedM &&
+          std::abs(angleDifference(k.field_T_robot.theta, c.field_T_robot.theta)) < kConvergedRad;
+    }
+    if (!same) out.push_back(std::move(c));
+  }
+  candidates.swap(out);
+}
+
+void GlobalHoughLocalizer::scoreCandidates(std::vector<PoseHypothesis>& candidates,
+                                           const WeightedPoints& points,
+                                           const VisibilityEvidence* evidence) const {
+  for (PoseHypothesis& c : candidates) {
+    const PoseScore s = scorePose(points, c.field_T_robot, map_.grid(), config_.scoring);
+    c.score = s.score - (evidence ? evidence->edgePenalty(c.field_T_robot, map_.field()) : 0.0);
+    c.inlier_share = s.inlier_share;
+  }
+}
+
+}  // namespace houghloc
