@@ -72,7 +72,8 @@ void ViewerWindow::showState(const ViewerState& state) {
 
 void ViewerWindow::setLog(std::shared_ptr<const LogIndex> log) {
   log_ = std::move(log);
-  const int span_ms = static_cast<int>((log_->endUs() - log_->startUs()) / 1000);
+  // Rounded up, so the slider's end reaches the last event.
+  const int span_ms = static_cast<int>((log_->endUs() - log_->startUs() + 999) / 1000);
   slider_->setRange(0, span_ms);
   slider_->setSingleStep(33);
   slider_->setPageStep(1000);
