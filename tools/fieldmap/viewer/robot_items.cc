@@ -21,9 +21,9 @@ const char* stateName(int state) {
   return state >= 0 && state < 4 ? names[state] : "?";
 }
 
-/// A robot marker: circle of 0.15 m radius and a 0.35 m heading line.
+/// A robot marker: circle of 0.08 m radius and a 0.35 m heading line.
 void addRobot(const Pose2& p, const QPen& pen, ViewerItem role, QGraphicsItemGroup* group) {
-  auto* body = new QGraphicsEllipseItem(-0.15, -0.15, 0.3, 0.3);
+  auto* body = new QGraphicsEllipseItem(-0.08, -0.08, 0.16, 0.16);
   body->setPos(toScene(p.translation()));
   body->setPen(pen);
   body->setData(kViewerRole, static_cast<int>(role));

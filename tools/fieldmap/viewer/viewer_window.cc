@@ -4,6 +4,7 @@
 #include <QLabel>
 #include <QSlider>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "tools/fieldmap/editor/field_view.h"
 #include "tools/fieldmap/viewer/robot_items.h"
@@ -84,6 +85,7 @@ void ViewerWindow::setLog(std::shared_ptr<const LogIndex> log) {
 
 void ViewerWindow::seek(std::int64_t t_us) {
   if (!log_) return;
+  t_us = std::clamp(t_us, log_->startUs(), log_->endUs());
   slider_->blockSignals(true);
   slider_->setValue(static_cast<int>((t_us - log_->startUs()) / 1000));
   slider_->blockSignals(false);
