@@ -6,7 +6,7 @@
 #include <iostream>
 #include <memory>
 
-#include "tools/fieldmap/editor/field_view.h"
+#include "tools/fieldmap/editor/screenshot.h"
 #include "tools/fieldmap/editor_model/document_io.h"
 #include "tools/fieldmap/viewer/viewer_window.h"
 #include "tools/fieldmap/viewer_model/lcm_feed.h"
@@ -80,15 +80,7 @@ void addViewCommand(CLI::App& app, int& exit_code) {
     }
     QApplication::processEvents();
     if (feed && feed->poll() > 0) window.showState(*live);
-    window.view()->fitField();
-    QApplication::processEvents();
-    if (!window.grab().save(QString::fromStdString(options->screenshot))) {
-      std::cerr << "houghloc-fieldmap: " << options->screenshot << ": cannot write the PNG\n";
-      exit_code = 1;
-      return;
-    }
-    std::cout << "wrote " << options->screenshot << "\n";
-    exit_code = 0;
+    exit_code = saveScreenshot(window, window.view(), options->screenshot);
   });
 }
 

@@ -86,8 +86,9 @@ void ViewerWindow::setLog(std::shared_ptr<const LogIndex> log) {
 void ViewerWindow::seek(std::int64_t t_us) {
   if (!log_) return;
   t_us = std::clamp(t_us, log_->startUs(), log_->endUs());
+  // Rounded up like the range, so the last event keeps the slider at its end.
   slider_->blockSignals(true);
-  slider_->setValue(static_cast<int>((t_us - log_->startUs()) / 1000));
+  slider_->setValue(static_cast<int>((t_us - log_->startUs() + 999) / 1000));
   slider_->blockSignals(false);
   time_->setText(QString("%1 s of %2 s")
                      .arg((t_us - log_->startUs()) * 1e-6, 0, 'f', 2)
