@@ -7,6 +7,7 @@
 #include "tools/fieldmap/commands.h"
 #ifdef HOUGHLOC_WITH_EDITOR
 #include "tools/fieldmap/editor/edit_command.h"
+#include "tools/fieldmap/viewer/view_command.h"
 #endif
 
 namespace houghloc::fieldmap {
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   addRenderCommand(app, exit_code);
 #ifdef HOUGHLOC_WITH_EDITOR
   addEditCommand(app, exit_code);
+  addViewCommand(app, exit_code);
 #endif
   try {
     app.parse(argc, argv);

@@ -16,6 +16,7 @@
 #include <memory>
 
 #include "field_models/field_yaml.h"
+#include "field_models/pose2.h"
 #include "tools/fieldmap/editor/editor_window.h"
 #include "tools/fieldmap/editor_model/document_io.h"
 #include "tools/fieldmap/editor_model/residuals.h"
@@ -119,6 +120,57 @@ TEST_F(EditorWidget, CheckPanelResidualsFollowThePose) {
   QTest::mousePress(viewport(), Qt::LeftButton, Qt::ShiftModifier, pixel(0.0, 0.0));
   QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ShiftModifier, pixel(0.3, 0.0));
   EXPECT_GT(window_->checkPanel()->report().overall.mean_m, 0.15);
+  EXPECT_TRUE(window_->undoStack()->isClean());  // the pose is no map edit
+}
+
+TEST_F(EditorWidget, LocalizeButtonFindsTheTrueOrMirrorPose) {
+  window_->openCheck(HOUGHLOC_CHECK_FIXTURE, 1);
+  CheckPanel* panel = window_->checkPanel();
+  // The reference: the fixture's ground truth, and the localizer's poses run outside the panel.
+  FrameSource source(HOUGHLOC_CHECK_FIXTURE);
+  const CheckFrame reference = source.frame(1, &window_->document().field());
+  ASSERT_TRUE(reference.ground_truth.has_value());
+  ASSERT_FALSE(reference.located.empty());
+  const Pose2 truth = *reference.ground_truth;
+  const Pose2 mirror(-truth.x, -truth.y, truth.theta + M_PI);
+
+  auto* button = panel->findChild<QPushButton*>("localize");
+  ASSERT_NE(button, nullptr);
+  panel->nudgePose(Eigen::Vector2d(0.8, -0.5), 0.4);  // start far off
+  ASSERT_GT(panel->report().overall.mean_m, 0.15);
+  // Two presses: the best pose, then the next of the localizer's poses.
+  std::vector<Pose2> shown;
+  for (int press = 0; press < 2; ++press) {
+    QTest::mouseClick(button, Qt::LeftButton);
+    const Pose2 p = panel->pose();
+    shown.push_back(p);
+    bool from_localizer = false;  // the form rounds to mm and 0.001 deg
+    for (const Pose2& q : reference.located) {
+      from_localizer |= (p.translation() - q.translation()).norm() < 2e-3 &&
+                        std::abs(angleDifference(p.theta, q.theta)) < 1e-4;
+    }
+    EXPECT_TRUE(from_localizer) << "press " << press + 1;
+    double off_m = 1e9;
+    for (const Pose2& good : {truth, mirror}) {
+      if (std::abs(angleDifference(p.theta, good.theta)) < 3.0 * M_PI / 180.0) {
+        off_m = std::min(off_m, (p.translation() - good.translation()).norm());
+      }
+    }
+    std::printf(
+        "press %d of %zu poses: (%.3f, %.3f, %.2f deg), %.3f m off the truth or twin, "
+        "residual mean %.4f m\n",
+        press + 1, reference.located.size(), p.x, p.y, p.theta * 180.0 / M_PI, off_m,
+        panel->report().overall.mean_m);
+    if (press == 0) {  // the best pose
+      EXPECT_LT(off_m, 0.10);
+      EXPECT_LT(panel->report().overall.mean_m, 0.02);
+    }
+  }
+  if (reference.located.size() > 1) {
+    EXPECT_GT((shown[0].translation() - shown[1].translation()).norm() +
+                  std::abs(angleDifference(shown[0].theta, shown[1].theta)),
+              1e-3);  // the second press cycled on
+  }
   EXPECT_TRUE(window_->undoStack()->isClean());  // the pose is no map edit
 }
 

@@ -8,7 +8,9 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "field_models/field_distance.h"
 #include "tools/fieldmap/editor/field_view.h"
@@ -27,6 +29,7 @@ CheckPanel::CheckPanel(FieldView* view, QWidget* parent)
       view_(view),
       status_(new QLabel("no recording open")),
       frame_box_(new QSpinBox),
+      located_status_(new QLabel),
       pose_(new NumberForm),
       table_(new QTableWidget(0, 4)) {
   auto* layout = new QVBoxLayout(this);
@@ -52,6 +55,12 @@ CheckPanel::CheckPanel(FieldView* view, QWidget* parent)
   connect(truth, &QPushButton::clicked, this, [this] {
     if (frame_ && frame_->ground_truth) setPose(*frame_->ground_truth);
   });
+  auto* localize_button = new QPushButton("Localize");
+  localize_button->setObjectName("localize");
+  localize_button->setToolTip(
+      "The global localizer's pose for this frame on the map as edited; "
+      "press again for the next pose");
+  connect(localize_button, &QPushButton::clicked, this, [this] { localize(); });
   table_->setHorizontalHeaderLabels({"feature", "points", "mean cm", "p95 cm"});
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setStretchLastSection(true);
@@ -69,6 +78,8 @@ CheckPanel::CheckPanel(FieldView* view, QWidget* parent)
   layout->addWidget(pose_);
   layout->addWidget(apply_pose);
   layout->addWidget(truth);
+  layout->addWidget(localize_button);
+  layout->addWidget(located_status_);
   layout->addWidget(new QLabel("Shift+drag in the view moves the pose, Shift+wheel turns it."));
   layout->addWidget(table_, 1);
 }
@@ -91,6 +102,8 @@ void CheckPanel::openRecording(const QString& folder, int frame) {
 
 void CheckPanel::showFrame(int index) {
   if (!source_) return;
+  located_.reset();
+  located_status_->clear();
   try {
     frame_ = source_->frame(index);
   } catch (const std::exception& e) {
@@ -125,7 +138,40 @@ void CheckPanel::nudgePose(const Eigen::Vector2d& delta_m, double delta_rad) {
   setPose(Pose2{p.x + delta_m.x(), p.y + delta_m.y(), p.theta + delta_rad});
 }
 
+void CheckPanel::localize() {
+  if (!source_ || !frame_) return;
+  if (!located_) {
+    try {
+      located_ = source_->frame(frame_->index, &doc_.field()).located;
+      // Best first by the residual on this map: the localizer's own order is by Hough votes,
+      // which can put a pose that slides 20 cm along a weakly constrained line first.
+      std::vector<std::pair<double, Pose2>> ranked;
+      for (const Pose2& p : *located_)
+        ranked.push_back(
+            {computeResiduals(doc_.field(), frame_->points_robot, p).overall.mean_m, p});
+      std::stable_sort(ranked.begin(), ranked.end(),
+                       [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (std::size_t i = 0; i < ranked.size(); ++i) (*located_)[i] = ranked[i].second;
+    } catch (const std::exception& e) {
+      located_status_->setText(e.what());
+      return;
+    }
+    next_located_ = 0;
+  }
+  if (located_->empty()) {
+    located_status_->setText("the localizer found no pose for this frame on this map");
+    return;
+  }
+  const std::size_t i = next_located_++ % located_->size();
+  located_status_->setText(QString("localizer pose %1 of %2").arg(i + 1).arg(located_->size()));
+  setPose((*located_)[i]);
+}
+
 void CheckPanel::update(const EditorDocument& doc) {
+  if (located_ && !sameField(doc.field(), doc_.field(), 0.0)) {
+    located_.reset();  // the map changed: the poses must be computed again
+    located_status_->clear();
+  }
   doc_ = doc;
   report_ = {};
   table_->setRowCount(0);

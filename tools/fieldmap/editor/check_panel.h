@@ -32,23 +32,32 @@ class CheckPanel : public QWidget {
   void update(const EditorDocument& doc);
   /// Moves the pose by a field-frame translation (m) and a rotation (rad) about the robot.
   void nudgePose(const Eigen::Vector2d& delta_m, double delta_rad);
+  /// Sets the pose to the global localizer's next pose for this frame on the map as edited
+  /// (lowest mean residual first; the next call cycles on, e.g. to the mirror twin of a
+  /// point-symmetric field).
+  void localize();
   const ResidualReport& report() const { return report_; }
+  /// The pose the points are drawn at (field_T_robot; the form holds mm and 0.001 deg).
+  Pose2 pose() const;
 
   std::function<void(FeatureId)> on_feature_clicked;
   std::function<void()> on_pose_changed;
 
  private:
   void showFrame(int index);
-  Pose2 pose() const;
   void setPose(const Pose2& pose);
 
   FieldView* view_;
   std::unique_ptr<FrameSource> source_;
   std::optional<CheckFrame> frame_;
+  /// The localizer's poses for frame_ on doc_'s map; cleared when the frame or the map changes.
+  std::optional<std::vector<Pose2>> located_;
+  std::size_t next_located_ = 0;
   EditorDocument doc_;
   ResidualReport report_;
   QLabel* status_;
   QSpinBox* frame_box_;
+  QLabel* located_status_;
   NumberForm* pose_;
   QTableWidget* table_;
 };

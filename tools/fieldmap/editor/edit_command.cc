@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "tools/fieldmap/editor/editor_window.h"
+#include "tools/fieldmap/editor/screenshot.h"
 #include "tools/fieldmap/editor_model/document_io.h"
 
 namespace houghloc::fieldmap {
@@ -46,16 +47,7 @@ void addEditCommand(CLI::App& app, int& exit_code) {
       exit_code = qt.exec();
       return;
     }
-    QApplication::processEvents();
-    window.view()->fitField();
-    QApplication::processEvents();
-    if (!window.grab().save(QString::fromStdString(options->screenshot))) {
-      std::cerr << "houghloc-fieldmap: " << options->screenshot << ": cannot write the PNG\n";
-      exit_code = 1;
-      return;
-    }
-    std::cout << "wrote " << options->screenshot << "\n";
-    exit_code = 0;
+    exit_code = saveScreenshot(window, window.view(), options->screenshot);
   });
 }
 
