@@ -4,6 +4,8 @@
 # tests/fuzz/corpus/<target>/ (new inputs go to build-fuzz/corpus/<target>/, crashes to
 # build-fuzz/crashes/<target>/). Exits non-zero when a target finds a crash, leak or timeout:
 # copy the input into tests/fuzz/corpus/<target>/ so fuzz_replay_<target> keeps it as a test.
+# HOUGHLOC_FUZZ_SEED fixes libFuzzer's random seed (.ci/run sets it, so that a CI run explores
+# the same inputs on every run instead of failing at random on an input nobody has seen).
 #   tools/fuzz.sh [TARGET|all] [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,7 +38,9 @@ for t in "${TARGETS[@]}"; do
   mkdir -p "$corpus" "$crashes"
   cp -n tests/fuzz/corpus/"$t"/* "$corpus"/
   start=$(date +%s)
-  if "$BUILD_DIR/tests/fuzz/${t}_fuzz" -max_total_time="$SECONDS_PER_TARGET" -timeout=10 \
+  seed=()
+  if [[ -n ${HOUGHLOC_FUZZ_SEED:-} ]]; then seed=(-seed="$HOUGHLOC_FUZZ_SEED"); fi
+  if "$BUILD_DIR/tests/fuzz/${t}_fuzz" ${seed[@]+"${seed[@]}"} -max_total_time="$SECONDS_PER_TARGET" -timeout=10 \
       -rss_limit_mb=2048 -max_len=65536 -artifact_prefix="$crashes/" -print_final_stats=1 \
       "$corpus" >"$BUILD_DIR/fuzz-$t.log" 2>&1; then
     result=ok
