@@ -43,3 +43,17 @@ if [[ -n "$javac" ]]; then
   expected=$(sed -E 's/.*hypotheses ([0-9]+).*/\1/' <<<"$summary")
   [[ "${decoded%% *}" == "$expected" ]]
 fi
+# The live viewer (houghloc-fieldmap view, built with the editor) replays this log of
+# houghloc-play and houghloc-node: two points of its time slider show different states.
+if [[ -n ${HOUGHLOC_VIEWER:-} ]]; then
+  for at in 2 8; do
+    QT_QPA_PLATFORM=offscreen "$HOUGHLOC_VIEWER" view --log "$log" --at "$at" \
+      --screenshot "$work/viewer_$at.png"
+    [[ -s "$work/viewer_$at.png" ]]
+  done
+  if cmp -s "$work/viewer_2.png" "$work/viewer_8.png"; then
+    echo "the viewer shows the same state at 2 s and 8 s of the log" >&2
+    exit 1
+  fi
+  echo "viewer: the log replayed at 2 s and 8 s gives two different views"
+fi
