@@ -8,13 +8,6 @@ namespace {
 
 using SteadyClock = std::chrono::steady_clock;
 
-// LCM's raw callback, forwarding to a std::function (the payload is decoded by the runner so
-// that a message that does not decode is counted instead of silently skipped).
-struct RawHandler {
-  std::function<void(const lcm::ReceiveBuffer&)> f;
-  void handle(const lcm::ReceiveBuffer* buf, const std::string&) { f(*buf); }
-};
-
 }  // namespace
 
 NodeRunner::NodeRunner(lcm::LCM& lcm, NodeCore& core, const std::string& channel_prefix,
@@ -45,8 +38,13 @@ NodeRunner::NodeRunner(lcm::LCM& lcm, NodeCore& core, const std::string& channel
 
 void NodeRunner::subscribe(const std::string& channel,
                            std::function<void(const lcm::ReceiveBuffer&)> f) {
-  auto* handler = new RawHandler{std::move(f)};  // lives as long as the process
-  lcm_.subscribe(prefix_ + channel, &RawHandler::handle, handler);
+  handlers_[prefix_ + channel] = std::move(f);
+  lcm_.subscribe(prefix_ + channel, &NodeRunner::onRaw, this);
+}
+
+void NodeRunner::onRaw(const lcm::ReceiveBuffer* buf, const std::string& channel) {
+  const auto it = handlers_.find(channel);
+  if (it != handlers_.end()) it->second(*buf);
 }
 
 template <typename T>

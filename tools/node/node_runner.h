@@ -27,6 +27,9 @@ class NodeRunner {
 
  private:
   void subscribe(const std::string& channel, std::function<void(const lcm::ReceiveBuffer&)> f);
+  /// LCM's raw callback for every subscribed channel: the payload is decoded by the channel's
+  /// handler, so that a message that does not decode is counted instead of silently skipped.
+  void onRaw(const lcm::ReceiveBuffer* buf, const std::string& channel);
   template <typename T>
   bool decode(const lcm::ReceiveBuffer& buf, T& msg);
   void processLoop(const std::atomic<bool>& stop);
@@ -43,6 +46,8 @@ class NodeRunner {
   std::map<std::string, image_t> images_;             ///< newest waiting image per camera
   std::int64_t undecodable_ = 0, replaced_ = 0;       ///< counted on the LCM thread
   std::int8_t last_state_ = -1;
+  /// Per full channel name; filled in the constructor, read on the LCM thread only.
+  std::map<std::string, std::function<void(const lcm::ReceiveBuffer&)>> handlers_;
 };
 
 }  // namespace houghloc
