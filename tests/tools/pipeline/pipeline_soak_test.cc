@@ -1,0 +1,148 @@
+// Soak: the one composition of vision and localization (LocalizationPipeline, kFull) over
+// 20 000 frames of two rendered recordings looped (kidnaps and a fall in each loop, and a jump
+// to the start pose at every loop's end), as a robot runs it for a whole match. Asserted:
+// resident memory grows by less than 5 MB after the first 1 000 frames, the number of
+// hypotheses stays within the tracker's bound, the estimate stays finite, and the thread CPU
+// time of the last 1 000 frames is within 1.25x of the first 1 000 (no state that grows and
+// slows every step down). Release only (label slow).
+#include <gtest/gtest.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+#include <vector>
+
+#include "tools/pipeline/localization_pipeline.h"
+#include "tools/recording/recording.h"
+#include "vision/image_conversion.h"
+
+namespace houghloc {
+namespace {
+
+constexpr int kFrames = 20000;
+constexpr int kWindow = 1000;
+
+/// Resident set size of this process (MB), from /proc/self/statm.
+double residentMegabytes() {
+  std::ifstream statm("/proc/self/statm");
+  long pages_total = 0, pages_resident = 0;
+  statm >> pages_total >> pages_resident;
+  return static_cast<double>(pages_resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1e6;
+}
+
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// A recorded frame with its image held in memory as YUYV (as a NAO delivers it, and half the
+/// bytes of BGR), so the loop measures the pipeline, not PNG decoding.
+struct LoadedFrame {
+  FrameRecord record;
+  cv::Mat yuyv;
+};
+
+std::vector<LoadedFrame> loadFrames(const Recording& recording) {
+  std::vector<LoadedFrame> frames;
+  for (const FrameRecord& record : recording.frames) {
+    const cv::Mat bgr = cv::imread(recording.folder + "/" + record.image, cv::IMREAD_COLOR);
+    if (bgr.empty()) throw std::runtime_error("cannot read " + record.image);
+    frames.push_back({record, bgrToYuyv(bgr)});
+  }
+  return frames;
+}
+
+/// Plays the loops back to back as one run: times continue, and odometry continues from where
+/// the previous loop ended (the robot is carried to the loop's start pose, an unannounced
+/// kidnap to the localizer).
+class LoopedRun {
+ public:
+  explicit LoopedRun(std::vector<std::vector<LoadedFrame>> loops) : loops_(std::move(loops)) {}
+
+  /// The frame and image of step n (0, 1, 2, ... in order).
+  std::pair<PipelineFrame, const cv::Mat*> step() {
+    const std::vector<LoadedFrame>& loop = loops_[loop_index_ % loops_.size()];
+    const LoadedFrame& loaded = loop[frame_index_];
+    const Pose2 start_inverse = loop.front().record.odometry.inverse();
+    PipelineFrame frame;
+    frame.t_us = t_offset_us_ + (loaded.record.t_us - loop.front().record.t_us);
+    frame.camera_id = loaded.record.camera_id;
+    frame.robot_T_camera = loaded.record.robot_T_camera;
+    frame.odometry = odometry_offset_ * (start_inverse * loaded.record.odometry);
+    if (++frame_index_ == static_cast<int>(loop.size())) {
+      frame_index_ = 0;
+      ++loop_index_;
+      t_offset_us_ = frame.t_us + 33333;
+      odometry_offset_ = *frame.odometry;
+    }
+    return {frame, &loaded.yuyv};
+  }
+
+ private:
+  std::vector<std::vector<LoadedFrame>> loops_;
+  std::size_t loop_index_ = 0;
+  int frame_index_ = 0;
+  std::int64_t t_offset_us_ = 0;
+  Pose2 odometry_offset_;
+};
+
+TEST(PipelineSoak, TwentyThousandFramesKeepMemoryHypothesesAndTimeBounded) {
+  std::vector<Recording> recordings;
+  for (const char* name : {"spl_nao-top_kidnap", "spl_nao-top_fall"}) {
+    recordings.push_back(readRecording(std::string(HOUGHLOC_SOAK_FIXTURES) + "/" + name));
+  }
+  const Recording& first = recordings.front();
+  ASSERT_TRUE(first.field && first.camera);
+  std::vector<std::vector<LoadedFrame>> loops;
+  for (const Recording& recording : recordings) loops.push_back(loadFrames(recording));
+
+  PipelineConfig config;
+  LocalizationPipeline pipeline(PipelineMode::kFull, std::make_shared<FieldModel>(*first.field),
+                                config);
+  pipeline.setCamera("", *first.camera);
+  const int max_hypotheses = config.localizer.tracker.set.max_hypotheses;
+
+  LoopedRun run(std::move(loops));
+  double cpu_first = 0.0, cpu_last = 0.0, rss_after_first = 0.0;
+  std::size_t most_hypotheses = 0;
+  int frames_with_points = 0;
+  for (int n = 0; n < kFrames; ++n) {
+    const auto [frame, image] = run.step();
+    const double cpu_before = threadCpuSeconds();
+    const PipelineResult result = pipeline.process(frame, *image);
+    const double cpu = threadCpuSeconds() - cpu_before;
+    if (n < kWindow) cpu_first += cpu;
+    if (n >= kFrames - kWindow) cpu_last += cpu;
+    if (n == kWindow - 1) rss_after_first = residentMegabytes();
+    most_hypotheses = std::max(most_hypotheses, result.estimate.hypotheses.size());
+    for (const EstimateHypothesis& h : result.estimate.hypotheses) {
+      ASSERT_TRUE(std::isfinite(h.pose.mean.x) && std::isfinite(h.pose.mean.y) &&
+                  std::isfinite(h.pose.mean.theta) && std::isfinite(h.pose.weight))
+          << "frame " << n;
+    }
+    if (result.estimate.points_in > 0) ++frames_with_points;
+    if ((n + 1) % 5000 == 0) {
+      std::printf("soak: %d frames, resident %.1f MB, most hypotheses %zu\n", n + 1,
+                  residentMegabytes(), most_hypotheses);
+    }
+  }
+  const double rss_growth = residentMegabytes() - rss_after_first;
+  std::printf("soak: resident growth after frame %d: %.2f MB; CPU first %d frames %.2f s, last "
+              "%.2f s (ratio %.3f); most hypotheses %zu of %d; frames with points %d\n",
+              kWindow, rss_growth, kWindow, cpu_first, cpu_last, cpu_last / cpu_first,
+              most_hypotheses, max_hypotheses, frames_with_points);
+  EXPECT_LT(rss_growth, 5.0);
+  EXPECT_LE(most_hypotheses, static_cast<std::size_t>(max_hypotheses));
+  EXPECT_LE(cpu_last, 1.25 * cpu_first);
+  // The run is a real one, not frames the vision dropped: most frames give points.
+  EXPECT_GT(frames_with_points, kFrames / 2);
+}
+
+}  // namespace
+}  // namespace houghloc
