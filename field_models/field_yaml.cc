@@ -8,7 +8,7 @@
 #include <sstream>
 #include <vector>
 
-#include "field_models/yaml_indentation.h"
+#include "field_models/yaml_precheck.h"
 
 namespace houghloc {
 namespace {
@@ -137,7 +137,7 @@ FieldModel parseFieldYaml(const std::string& text, const std::string& source_nam
   if (first == std::string::npos) throw FormatError(source_name + ": empty file");
   const bool has_header = text[first] == '%' || text[first] == '{';  // YAML header or JSON
   const std::string full = has_header ? text : kYamlHeader + text;
-  checkYamlIndentation(text, source_name);
+  checkYamlBeforeFileStorage(text, source_name);
   try {
     cv::FileStorage fs(full, cv::FileStorage::READ | cv::FileStorage::MEMORY);
     if (!fs.isOpened()) throw FormatError(source_name + ": not a readable YAML map");

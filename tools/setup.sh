@@ -10,7 +10,7 @@ PACKAGES=(
   libeigen3-dev libopencv-dev libopencv-contrib-dev nlohmann-json3-dev libcli11-dev
   liblcm-dev liblcm-bin liblcm-java libglib2.0-dev openjdk-17-jdk-headless
   googletest libgtest-dev libbenchmark-dev
-  iproute2 util-linux
+  libyaml-dev iproute2 util-linux
   qtbase5-dev xvfb
   clang-14 libfuzzer-14-dev libclang-rt-14-dev
 )

@@ -147,8 +147,12 @@ void CameraModel::computeHorizon() {
   for (int i = 0; i < samples; ++i) {
     if (!pixels[i] || !pixels[i + 1]) continue;
     const double u0 = pixels[i]->x(), u1 = pixels[i + 1]->x();
-    const int first = std::max(0, static_cast<int>(std::ceil(std::min(u0, u1))));
-    const int last = std::min(width() - 1, static_cast<int>(std::floor(std::max(u0, u1))));
+    if (!std::isfinite(u0) || !std::isfinite(u1)) continue;
+    // Clamped as doubles first: a ray near the image plane projects far beyond any int.
+    const double last_column = width() - 1;
+    const int first =
+        static_cast<int>(std::clamp(std::ceil(std::min(u0, u1)), 0.0, last_column + 1));
+    const int last = static_cast<int>(std::clamp(std::floor(std::max(u0, u1)), -1.0, last_column));
     for (int column = first; column <= last; ++column) {
       if (!std::isnan(horizon_rows_[column])) continue;
       // Secant steps, kept inside the bracket [a_lo, a_hi] (bisection when they leave it).

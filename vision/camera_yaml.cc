@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "field_models/yaml_indentation.h"
+#include "field_models/yaml_precheck.h"
 #include "vision/camera_model.h"
 
 namespace houghloc {
@@ -66,7 +66,7 @@ std::vector<double> readNumbers(const cv::FileNode& node, const std::string& pat
 CameraIntrinsics loadCameraYaml(const std::string& path) {
   // Checked first because OpenCV logs to stderr when it cannot open a file (libraries stay quiet).
   if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot open camera file");
-  checkYamlIndentation(readTextFile(path), path);  // FileStorage hangs on some bad indentation
+  checkYamlBeforeFileStorage(readTextFile(path), path);  // FileStorage hangs on some malformed YAML
   cv::FileStorage fs;
   try {
     if (!fs.open(path, cv::FileStorage::READ)) {

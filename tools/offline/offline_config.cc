@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "field_models/yaml_indentation.h"
+#include "field_models/yaml_precheck.h"
 #include "localization/localizer_config_io.h"
 #include "vision/vision_config_io.h"
 
@@ -22,10 +22,10 @@ OfflineConfig loadOfflineConfig(const std::string& path) {
   std::stringstream text;
   text << file.rdbuf();
   std::string yaml = text.str();
+  checkYamlBeforeFileStorage(yaml, path);  // FileStorage hangs on some malformed YAML
   // OpenCV's reader wants the "%YAML:1.0" line that --print-config writes; a hand-written file
   // without it is accepted too.
   if (yaml.rfind("%YAML", 0) != 0) yaml = "%YAML:1.0\n---\n" + yaml;
-  checkYamlIndentation(yaml, path);  // FileStorage hangs on some bad indentation
   cv::FileStorage storage;
   try {
     storage.open(yaml,

@@ -4,7 +4,7 @@
 #include <opencv2/core.hpp>
 #include <stdexcept>
 
-#include "field_models/yaml_indentation.h"
+#include "field_models/yaml_precheck.h"
 #include "tools/render/scenario.h"
 #include "tools/render/yaml_map.h"
 
@@ -187,7 +187,7 @@ namespace {
 Scenario readScenarioFile(const std::string& path) {
   if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot open scenario file");
   std::string text = readTextFile(path);
-  checkYamlIndentation(text, path);  // FileStorage hangs on some bad indentation
+  checkYamlBeforeFileStorage(text, path);  // FileStorage hangs on some malformed YAML
   // Like the offline config: a hand-written file without the "%YAML:1.0" line is accepted too.
   if (text.find_first_not_of(" \t\r\n") != std::string::npos && text.rfind("%YAML", 0) != 0) {
     text = "%YAML:1.0\n---\n" + text;

@@ -70,7 +70,7 @@ open(p, "w").write(s[:i] + "distortion_coefficients: [ 0.1, 0.2, 0.3 ]\nmodel: p
 PY
 offline distortion_wrong_length fail "c/camera.yaml: key 'distortion_coefficients'"
 copy; printf ' c: 1\n-x\n-' >c/camera.yaml
-offline camera_bad_indentation fail "c/camera.yaml:2: indented less than the first key"
+offline camera_bad_indentation fail "c/camera.yaml: line 2: indented less than the first key"
 
 # frames.csv, groundtruth.csv, hints.csv
 copy; sed -i '3s/,[^,]*$//' c/frames.csv
