@@ -9,7 +9,7 @@
 #   tools/fuzz.sh [TARGET|all] [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-TARGETS=(field_yaml spl_json camera_yaml recording_csv scenario_yaml vision localizer)
+TARGETS=(field_yaml spl_json camera_yaml recording_csv scenario_yaml vision localizer node)
 WHICH=${1:-all}
 SECONDS_PER_TARGET=${2:-30}
 BUILD_DIR=${HOUGHLOC_FUZZ_BUILD_DIR:-build-fuzz}

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <thread>
 
+#include "tools/lcm/message_decoding.h"
+
 namespace houghloc {
 namespace {
 
@@ -49,8 +51,7 @@ void NodeRunner::onRaw(const lcm::ReceiveBuffer* buf, const std::string& channel
 
 template <typename T>
 bool NodeRunner::decode(const lcm::ReceiveBuffer& buf, T& msg) {
-  if (msg.decode(buf.data, 0, static_cast<int>(buf.data_size)) == static_cast<int>(buf.data_size))
-    return true;
+  if (decodeMessage(buf.data, buf.data_size, msg)) return true;
   std::lock_guard<std::mutex> lock(mutex_);
   ++undecodable_;
   return false;

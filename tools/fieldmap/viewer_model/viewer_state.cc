@@ -5,6 +5,8 @@
 #include <lcm/lcm-cpp.hpp>
 #include <stdexcept>
 
+#include "tools/lcm/message_decoding.h"
+
 namespace houghloc::fieldmap {
 namespace {
 
@@ -27,11 +29,12 @@ bool finite(const line_points_t& m) {
 
 bool finite(const localizer_status_t& m) { return std::isfinite(m.cycle_time_ms); }
 
-/// Decodes exactly `size` bytes (lcm's decode checks the type hash and every length).
+/// Decodes exactly `size` bytes (decodeMessage checks the type hash and every length).
 template <typename T>
 bool decodeInto(const void* bytes, int size, std::optional<T>& out) {
   T msg;
-  if (msg.decode(bytes, 0, size) != size || !finite(msg)) return false;
+  if (size < 0 || !decodeMessage(bytes, static_cast<std::size_t>(size), msg) || !finite(msg))
+    return false;
   out = std::move(msg);
   return true;
 }
