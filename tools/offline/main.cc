@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "tools/offline/evaluate_only.h"
+#include "tools/offline/lcm_log_mode.h"
 #include "tools/offline/mode_full.h"
 #include "tools/offline/mode_global_only.h"
 #include "tools/offline/mode_vision_only.h"
@@ -15,8 +16,8 @@
 int main(int argc, char** argv) {
   using namespace houghloc;
   CLI::App app{
-      "houghloc-offline: runs houghloc on a recorded image folder "
-      "(DESIGN 5.2)"};
+      "houghloc-offline: runs houghloc on a recorded image folder (DESIGN 5.2) or on an "
+      "lcm-logger log of houghloc-node (--lcm-log)"};
   OfflineOptions options;
   addOfflineOptions(app, &options);
   CLI11_PARSE(app, argc, argv);
@@ -25,6 +26,11 @@ int main(int argc, char** argv) {
     if (options.print_config) {
       std::fputs(defaultConfigYaml().c_str(), stdout);
       return 0;
+    }
+    if (!options.lcm_log.empty()) return runLcmLog(options);
+    if (!options.camera_yamls.empty() || !options.channel_prefix.empty()) {
+      std::fprintf(stderr, "houghloc-offline: --camera-yaml and --channel-prefix need --lcm-log\n");
+      return 2;
     }
     if (options.folder.empty()) {
       std::fprintf(stderr, "FOLDER is required\nRun with --help for more information.\n");

@@ -11,11 +11,10 @@
 #include "tools/offline/offline_config.h"
 
 namespace houghloc {
-namespace {
 
 namespace fs = std::filesystem;
 
-void prepareOutput(const std::string& dir) {
+void prepareOutputFolder(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw std::runtime_error(dir + ": cannot create output folder: " + ec.message());
@@ -26,8 +25,6 @@ void prepareOutput(const std::string& dir) {
   }
   fs::remove(probe, ec);
 }
-
-}  // namespace
 
 OfflineContext loadOfflineContext(const OfflineOptions& options) {
   OfflineContext context;
@@ -75,7 +72,7 @@ OfflineContext loadOfflineContext(const OfflineOptions& options) {
   }
   context.out_dir =
       options.out_dir.empty() ? (fs::path(options.folder) / "houghloc").string() : options.out_dir;
-  prepareOutput(context.out_dir);
+  prepareOutputFolder(context.out_dir);
   return context;
 }
 

@@ -29,4 +29,7 @@ struct OfflineContext {
 /// std::runtime_error (or RecordingError) whose message names the file (and line or key) at fault.
 OfflineContext loadOfflineContext(const OfflineOptions& options);
 
+/// Creates `dir` when missing and checks that it is writable; throws std::runtime_error naming it.
+void prepareOutputFolder(const std::string& dir);
+
 }  // namespace houghloc

@@ -34,6 +34,12 @@ void addOfflineOptions(CLI::App& app, OfflineOptions* o) {
                "recompute metrics.json and trajectory.png from poses.csv/hypotheses.csv in OUT "
                "(with --global-only: of a --global-only run)")
       ->excludes(vision);
+  app.add_option("--lcm-log", o->lcm_log,
+                 "run on an lcm-logger log of houghloc-node instead of FOLDER: the images the node "
+                 "answered with HYPOTHESES (needs --camera-yaml and --field or --standard)");
+  app.add_option("--camera-yaml", o->camera_yamls,
+                 "with --lcm-log: [ID=]camera.yaml, one per camera (no ID: the camera '')");
+  app.add_option("--channel-prefix", o->channel_prefix, "with --lcm-log: the node's prefix");
 }
 
 OfflineMode offlineMode(const OfflineOptions& o) {

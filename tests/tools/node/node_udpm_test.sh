@@ -43,6 +43,14 @@ if [[ -n "$javac" ]]; then
   expected=$(sed -E 's/.*hypotheses ([0-9]+).*/\1/' <<<"$summary")
   [[ "${decoded%% *}" == "$expected" ]]
 fi
+# houghloc-offline --lcm-log on this log gives the node's logged poses (HOUGHLOC_OFFLINE and
+# HOUGHLOC_LOG_CHECK: houghloc-offline and lcm_log_poses_check).
+if [[ -n ${HOUGHLOC_OFFLINE:-} ]]; then
+  rm -rf "$work/offline_lcm_log"
+  "$HOUGHLOC_OFFLINE" --lcm-log "$log" --field "$folder/field.yaml" \
+    --camera-yaml "$folder/camera.yaml" -o "$work/offline_lcm_log" --quiet | grep "difference"
+  "$HOUGHLOC_LOG_CHECK" "$log" "$work/offline_lcm_log"
+fi
 # The live viewer (houghloc-fieldmap view, built with the editor) replays this log of
 # houghloc-play and houghloc-node: two points of its time slider show different states.
 if [[ -n ${HOUGHLOC_VIEWER:-} ]]; then
