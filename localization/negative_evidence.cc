@@ -56,9 +56,11 @@ VisibilityEvidence::VisibilityEvidence(const GroundPoints& frame, const Weighted
   for (int r = stride / 2; r < rows_; r += stride) {
     for (int c = stride / 2; c < cols_; c += stride) {
       if (cells_[static_cast<std::size_t>(r) * cols_ + c] & 1) {
-        green_.push_back(origin_ + config.raster_m * Eigen::Vector2d(c + 0.5, r + 0.5));
-        green_lo_ = green_lo_.cwiseMin(green_.back());
-        green_hi_ = green_hi_.cwiseMax(green_.back());
+        const Eigen::Vector2d g = origin_ + config.raster_m * Eigen::Vector2d(c + 0.5, r + 0.5);
+        green_x_.push_back(g.x());
+        green_y_.push_back(g.y());
+        green_lo_ = green_lo_.cwiseMin(g);
+        green_hi_ = green_hi_.cwiseMax(g);
       }
     }
   }
@@ -179,7 +181,7 @@ double VisibilityEvidence::greenOutsideCarpet(const Pose2& field_T_robot,
   const double c = std::cos(field_T_robot.theta), s = std::sin(field_T_robot.theta);
   // The samples lie in their box: when its corners are all on the carpet (with a margin against
   // rounding), so is every sample.
-  bool all_inside = !green_.empty();
+  bool all_inside = !green_x_.empty();
   for (int k = 0; k < 4 && all_inside; ++k) {
     const double gx = k & 1 ? green_hi_.x() : green_lo_.x();
     const double gy = k & 2 ? green_hi_.y() : green_lo_.y();
@@ -189,10 +191,14 @@ double VisibilityEvidence::greenOutsideCarpet(const Pose2& field_T_robot,
   }
   if (all_inside) return 0.0;
   int outside = 0;
-  for (const auto& g : green_) {
-    const double x = c * g.x() - s * g.y() + field_T_robot.x;
-    const double y = s * g.x() + c * g.y() + field_T_robot.y;
-    outside += std::abs(x) > hx || std::abs(y) > hy;
+  const double tx = field_T_robot.x, ty = field_T_robot.y;
+  const double* gx = green_x_.data();
+  const double* gy = green_y_.data();
+  const std::size_t n = green_x_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = c * gx[i] - s * gy[i] + tx;
+    const double y = s * gx[i] + c * gy[i] + ty;
+    outside += (std::abs(x) > hx) | (std::abs(y) > hy);
   }
   return outside * green_cell_area_;
 }

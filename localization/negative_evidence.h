@@ -69,8 +69,10 @@ class VisibilityEvidence {
   int cols_ = 0, rows_ = 0;
   /// Per cell: bit 0 inside the region, bit 1 inside with margin, bit 2 near a seen point.
   std::vector<unsigned char> cells_;
-  std::vector<Eigen::Vector2d> green_;  ///< lattice samples inside the region, robot frame
-  Eigen::Vector2d green_lo_ = Eigen::Vector2d::Constant(1e300);  ///< box of green_
+  /// Lattice samples inside the region, robot frame; x and y apart so that the count of samples
+  /// beyond the carpet is a loop the compiler vectorises.
+  std::vector<double> green_x_, green_y_;
+  Eigen::Vector2d green_lo_ = Eigen::Vector2d::Constant(1e300);  ///< box of the green samples
   Eigen::Vector2d green_hi_ = Eigen::Vector2d::Constant(-1e300);
   /// Box of the cells that count for unseenLineLength (robot frame; empty when lo > hi).
   Eigen::Vector2d unseen_lo_ = Eigen::Vector2d::Constant(1e300);
