@@ -55,14 +55,6 @@ OfflineContext loadOfflineContext(const OfflineOptions& options) {
   context.vision_config = config.vision;
   context.localizer_config = config.localizer;
   context.hints = convertHints(context.recording);
-  if (context.field) {
-    context.vision_config.line_width_m = context.field->line_width;
-    for (const Arc2& arc : context.field->arcs) {
-      if (arc.isFullCircle() && arc.center.norm() < 1e-6) {
-        context.vision_config.segments.circle_radius_m = arc.radius;
-      }
-    }
-  }
   const int frames = static_cast<int>(context.recording.frames.size());
   context.first_frame = std::min(options.start, frames);
   context.end_frame = options.end < 0 ? frames : std::min(options.end, frames);

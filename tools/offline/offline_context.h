@@ -18,7 +18,7 @@ struct OfflineContext {
   OfflineOptions options;
   Recording recording;
   std::optional<FieldModel> field;      ///< --field, --standard, or FOLDER/field.yaml
-  VisionConfig vision_config;           ///< defaults, the --config file, then the map's line width
+  VisionConfig vision_config;           ///< defaults, then the --config file (the pipeline takes line width and circle from the map)
   LocalizerConfig localizer_config;     ///< defaults, then the --config file
   std::vector<LocalizationHint> hints;  ///< hints.csv, in time order
   std::string out_dir;                  ///< exists and is writable

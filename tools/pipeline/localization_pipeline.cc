@@ -21,15 +21,28 @@ std::shared_ptr<const FieldModel> correctorMap(PipelineMode mode,
   return mode == PipelineMode::kFull ? field : nullptr;
 }
 
+/// The vision's line width and centre-circle radius come from the map when there is one, so a
+/// field with other dimensions than the defaults needs no config file (every tool alike).
+PipelineConfig withFieldDimensions(PipelineConfig config, const FieldModel* field) {
+  if (!field) return config;
+  config.vision.line_width_m = field->line_width;
+  for (const Arc2& arc : field->arcs) {
+    if (arc.isFullCircle() && arc.center.norm() < 1e-6) {
+      config.vision.segments.circle_radius_m = arc.radius;
+    }
+  }
+  return config;
+}
+
 }  // namespace
 
 LocalizationPipeline::LocalizationPipeline(PipelineMode mode,
                                            std::shared_ptr<const FieldModel> field,
                                            const PipelineConfig& config)
     : mode_(mode),
-      config_(config),
+      config_(withFieldDimensions(config, field.get())),
       field_(std::move(field)),
-      cameras_(config.vision, correctorMap(mode, field_)),
+      cameras_(config_.vision, correctorMap(mode, field_)),
       feedback_(0, config.track_feedback_lag_frames) {
   if (!field_ && mode_ != PipelineMode::kVisionOnly) {
     throw std::invalid_argument("LocalizationPipeline: localization needs a field map");
