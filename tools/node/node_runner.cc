@@ -163,8 +163,12 @@ void NodeRunner::publishStatus(const localizer_status_t& status) {
 
 void NodeRunner::savePose() {
   const LocalizationEstimate& estimate = core_.estimate();
-  // Only a pose the tracker trusts is worth restoring; otherwise the file keeps the last one.
-  if (estimate.status != TrackerStatus::kTracking || !estimate.best()) return;
+  // A LOST or INITIALIZING estimate is not worth restoring: the file keeps the last good one.
+  // AMBIGUOUS is saved: on a point-symmetric field without hints it is the steady state (the
+  // twin comes back with every global injection), and its best is the one the node reports.
+  if (estimate.status != TrackerStatus::kTracking && estimate.status != TrackerStatus::kAmbiguous)
+    return;
+  if (!estimate.best()) return;
   try {
     savePoseFile(options_.save_pose, *estimate.best());
   } catch (const std::exception& e) {

@@ -28,7 +28,7 @@ struct NodeRunnerOptions {
 /// waiting, each camera keeps only its newest (older ones are counted as queue full), and the
 /// oldest utime across cameras is processed first. Images may also come from other threads
 /// (submitImage(): a grabbed device). With save_pose set, the best pose is written every
-/// save_period_s while TRACKING and once more at the end.
+/// save_period_s while TRACKING or AMBIGUOUS and once more at the end.
 class NodeRunner {
  public:
   NodeRunner(lcm::LCM& lcm, NodeCore& core, const std::string& channel_prefix,

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <opencv2/core.hpp>
+#include <sstream>
 #include <stdexcept>
 
 namespace houghloc {
@@ -30,9 +31,15 @@ void savePoseFile(const std::string& path, const GaussianPose& pose) {
 
 std::optional<GaussianPose> loadPoseFile(const std::string& path) {
   if (!std::filesystem::exists(path)) return std::nullopt;
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  std::string yaml = text.str();
+  if (yaml.rfind("%YAML", 0) != 0) yaml = "%YAML:1.0\n---\n" + yaml;  // a hand-written file
   cv::FileStorage storage;
   try {
-    storage.open(path, cv::FileStorage::READ | cv::FileStorage::FORMAT_YAML);
+    storage.open(yaml,
+                 cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
   } catch (const cv::Exception& e) {
     throw std::runtime_error(path + ": not a saved pose: " + e.err);
   }

@@ -9,7 +9,7 @@ namespace houghloc {
 
 /// houghloc-node --save-pose: the best pose kept across restarts of the node.
 struct PoseFileConfig {
-  double save_period_s = 1.0;  ///< the file is rewritten this often while TRACKING, s
+  double save_period_s = 1.0;  ///< rewritten this often while TRACKING or AMBIGUOUS, s
   /// The restored pose becomes a RESET_TO hint with these standard deviations: the robot may
   /// have walked for the up to 1 s since the last save and the ~1 s the node needs to start
   /// (NAO: <= 0.3 m/s), and a Gaussian this wide still keeps the hypothesis on its own half.

@@ -55,7 +55,7 @@ TEST_F(NodeOptionsTest, NodeSectionKeysAreTheFlagsAndFlagsWin) {
                                    "  standard: spl\n"
                                    "  camera_yaml: [top=top.yaml, bottom=bottom.yaml]\n"
                                    "  device: top=/dev/video0\n"
-                                   "  lcm_url: udpm://239.255.76.67:7667?ttl=0\n"
+                                   "  lcm_url: \"udpm://239.255.76.67:7667?ttl=0\"\n"
                                    "  channel_prefix: NAO3_\n"
                                    "  save_pose: /tmp/pose.yaml\n"
                                    "  publish_line_points: \"off\"\n"
