@@ -148,6 +148,30 @@ TEST_F(NodeFaultsTest, StaticCameraPoseStandsInForCameraPoseMessages) {
   EXPECT_EQ(without->drops().no_camera_pose, 1);
 }
 
+TEST_F(NodeFaultsTest, CameraStreamsMoreThanOneSecondApartAreReported) {
+  // A second camera ("bottom", the same images) that stops after the first frame.
+  std::map<std::string, CameraIntrinsics> two = cameras_;
+  two["bottom"] = cameras_.begin()->second;
+  NodeCore core(std::make_shared<const FieldModel>(*rec_->field), PipelineConfig{}, two);
+  const std::string top = frame(0).camera_id;
+  for (std::size_t i = 0; i < 45; ++i) {
+    const FrameRecord& f = frame(i);
+    core.onOdometry(odometryToMessage(f.t_us, f.odometry));
+    for (const std::string& id : {top, std::string("bottom")}) {
+      if (id == "bottom" && i > 0) continue;
+      core.onCameraPose(cameraPoseToMessage(f.t_us, id, f.robot_T_camera));
+      image_t msg = image(i, f.t_us);
+      msg.camera_id = id;
+      ASSERT_TRUE(core.onImage(msg)) << "frame " << i << ": " << core.status().message;
+    }
+    const std::int64_t behind = f.t_us - frame(0).t_us;
+    const std::string message = core.status().message;
+    const bool reported = message.find("camera 'bottom': images ") != std::string::npos &&
+                          message.find(" s behind camera '" + top + "'") != std::string::npos;
+    EXPECT_EQ(reported, behind > 1'000'000) << "frame " << i << ": " << message;
+  }
+}
+
 TEST_F(NodeFaultsTest, PoseFileIsWrittenAtomicallyAndReadBack) {
   const std::string dir = std::string(HOUGHLOC_NODE_WORK) + "/pose_file";
   std::filesystem::remove_all(dir);
