@@ -24,12 +24,18 @@ term() {
 # 1. The config file: --print-config is a config the node accepts; an unknown key is named.
 "$node" --print-config > "$work/default.yaml"
 grep -q "^node:" "$work/default.yaml" || fail "--print-config has no node: section"
+"$node" --config "$work/default.yaml" --field "$folder/field.yaml" \
+  --camera-yaml "$folder/camera.yaml" --lcm-url memq:// 2> "$work/default.err" &
+pid=$!
+for _ in $(seq 100); do grep -q "running" "$work/default.err" && break; sleep 0.1; done
+term $pid
+grep -q "running" "$work/default.err" || fail "$(cat "$work/default.err")"
 printf 'node:\n   camera_yamls: x.yaml\n' > "$work/bad.yaml"
 if "$node" --config "$work/bad.yaml" --standard spl 2> "$work/bad.err"; then
   fail "an unknown key in node: was accepted"
 fi
 grep -q "bad.yaml: node.camera_yamls: unknown key" "$work/bad.err" || fail "$(cat "$work/bad.err")"
-echo "config: --print-config accepted, unknown key named: $(cat "$work/bad.err")"
+echo "config: the node starts with --print-config's file; an unknown key is named: $(cat "$work/bad.err")"
 
 # 2. --device on a device that does not exist, its camera and the device in the config file.
 missing=/dev/houghloc-missing-video9
