@@ -109,14 +109,23 @@ bool readKey(const cv::FileNode& node, const std::string& key, const std::string
   return false;
 }
 
+/// Checks the values; `where` is "FILE: node." for a config section, empty for the command line
+/// (whose values are then named by their flags).
 void check(const NodeOptions& o, const std::string& where) {
+  auto name = [&](const std::string& key) { return where.empty() ? flagOf(key) : where + key; };
   if (o.publish_line_points != "on" && o.publish_line_points != "off")
-    throw std::runtime_error(where + "publish_line_points: expected on or off, not '" +
+    throw std::runtime_error(name("publish_line_points") + ": expected on or off, not '" +
                              o.publish_line_points + "'");
   if (!parseLogLevel(o.log_level))
-    throw std::runtime_error(where + "log_level: expected error, warn, info or debug, not '" +
+    throw std::runtime_error(name("log_level") + ": expected error, warn, info or debug, not '" +
                              o.log_level + "'");
-  for (const std::string& d : o.device) splitCameraArgument(d, false);
+  for (const std::string& d : o.device) {
+    try {
+      splitCameraArgument(d, false);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(name("device") + ": " + e.what());
+    }
+  }
 }
 
 }  // namespace

@@ -98,8 +98,10 @@ TEST_F(NodeOptionsTest, BadKeysAndValuesAreNamed) {
   const std::string type = write("type.yaml", "node:\n  save_pose: 3\n");
   EXPECT_EQ(error({"--config", type}), type + ": node.save_pose: expected a string");
   EXPECT_EQ(error({"--log-level", "loud"}),
-            "log_level: expected error, warn, info or debug, not 'loud'");
-  EXPECT_EQ(error({"--device", "/dev/video0"}), "'/dev/video0': expected ID=VALUE");
+            "--log-level: expected error, warn, info or debug, not 'loud'");
+  EXPECT_EQ(error({"--device", "/dev/video0"}), "--device: '/dev/video0': expected ID=VALUE");
+  const std::string device = write("device.yaml", "node:\n  device: [top=/dev/video0, video1]\n");
+  EXPECT_EQ(error({"--config", device}), device + ": node.device: 'video1': expected ID=VALUE");
 }
 
 TEST_F(NodeOptionsTest, PrintConfigGivesTheDefaultsBack) {
