@@ -26,13 +26,22 @@ void DeviceGrabber::start() {
   thread_ = std::thread([this] { loop(); });
 }
 
-void DeviceGrabber::stop() {
+void DeviceGrabber::requestStop() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stop_ = true;
   }
   wake_.notify_all();
+}
+
+void DeviceGrabber::stop() {
+  requestStop();
   if (thread_.joinable()) thread_.join();
+}
+
+void DeviceGrabber::loop() {
+  grabUntilStopped();
+  finished_ = true;
 }
 
 bool DeviceGrabber::waitRetry() {
@@ -53,7 +62,7 @@ void DeviceGrabber::report(const std::string& problem) {
   if (changed) on_problem_(problem);
 }
 
-void DeviceGrabber::loop() {
+void DeviceGrabber::grabUntilStopped() {
   const std::string who = "camera '" + camera_id_ + "': " + device_;
   char retry_text[64];
   std::snprintf(retry_text, sizeof(retry_text), "; retrying every %g s", config_.retry_s);

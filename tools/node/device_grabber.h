@@ -33,12 +33,18 @@ class DeviceGrabber {
   DeviceGrabber& operator=(const DeviceGrabber&) = delete;
 
   void start();
-  /// Ends the thread (within one grab or at once while waiting to retry).
+  /// Asks the thread to end (after the grab under way, at once while waiting to retry).
+  void requestStop();
+  /// The thread has ended. A grab blocked in the driver (V4L2 waits up to 10 s for a frame of
+  /// a stalled camera) keeps this false for that long.
+  bool finished() const { return finished_; }
+  /// requestStop(), then waits for the thread.
   void stop();
   int attempts() const { return attempts_; }  ///< tries to open the device so far
 
  private:
   void loop();
+  void grabUntilStopped();
   void report(const std::string& problem);
   bool waitRetry();  ///< false when stopped while waiting
 
@@ -53,6 +59,7 @@ class DeviceGrabber {
   std::condition_variable wake_;
   bool stop_ = false;
   std::atomic<int> attempts_{0};
+  std::atomic<bool> finished_{false};
   std::string problem_;  ///< the last one reported ("" while frames flow)
 };
 

@@ -1,9 +1,12 @@
 // houghloc-node: the onboard LCM process (DESIGN §1, §7).
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <lcm/lcm-cpp.hpp>
 #include <memory>
+#include <thread>
 
 #include "field_models/field_yaml.h"
 #include "field_models/standard_fields.h"
@@ -84,9 +87,21 @@ int run(const NodeOptions& o, NodeLog& log, const std::atomic<bool>& stop) {
   log.info("running, " + std::to_string(cameras.size()) + " camera(s), " +
            std::to_string(grabbers.size()) + " device(s)");
   runner.run(stop);
-  for (auto& grabber : grabbers) grabber->stop();
+  for (auto& grabber : grabbers) grabber->requestStop();
+  // The node ends within 1 s of SIGTERM even when a stalled camera blocks a grab in the driver.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
+  bool blocked = false;
+  for (auto& grabber : grabbers) {
+    while (!grabber->finished() && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    blocked = blocked || !grabber->finished();
+  }
   log.info("stopped after " + std::to_string(core.status().frames_processed) + " images, dropped " +
            std::to_string(core.drops().total()));
+  if (blocked) {
+    log.warn("a device grab is blocked in the driver: exiting without waiting for it");
+    std::_Exit(0);
+  }
   return 0;
 }
 

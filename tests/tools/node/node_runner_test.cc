@@ -165,6 +165,11 @@ TEST_F(NodeRunnerTest, MissingDeviceIsRetriedAndNamedInTheStatus) {
   grabber.start();
   std::this_thread::sleep_for(std::chrono::milliseconds(1100));
   EXPECT_GE(grabber.attempts(), 4);  // once at start, then every 0.2 s
+  grabber.requestStop();             // ends a wait to retry at once (houghloc-node waits <= 0.5 s)
+  const auto asked = std::chrono::steady_clock::now();
+  while (!grabber.finished() && std::chrono::steady_clock::now() - asked < std::chrono::seconds(1))
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_LT(std::chrono::steady_clock::now() - asked, std::chrono::milliseconds(500));
   grabber.stop();
   node.stop();
   EXPECT_EQ(images, 0);
