@@ -1,10 +1,28 @@
 #include "tools/node/node_core.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
 
 #include "tools/lcm/message_conversion.h"
 
 namespace houghloc {
+namespace {
+
+std::string seconds(std::int64_t us) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f", 1e-6 * static_cast<double>(us));
+  return text;
+}
+
+void append(std::string& message, const std::string& part) {
+  if (part.empty()) return;
+  message += (message.empty() ? "" : "; ") + part;
+}
+
+}  // namespace
 
 NodeCore::NodeCore(std::shared_ptr<const FieldModel> field, const PipelineConfig& config,
                    const std::map<std::string, CameraIntrinsics>& cameras,
@@ -16,6 +34,8 @@ NodeCore::NodeCore(std::shared_ptr<const FieldModel> field, const PipelineConfig
 void NodeCore::drop(DropReason reason, const std::string& message) {
   drops_.add(reason);
   problem_ = message;
+  problem_utime_ = last_utime_;
+  for (const auto& [id, t] : newest_image_utime_) problem_utime_ = std::max(problem_utime_, t);
 }
 
 void NodeCore::onOdometry(const odometry_t& msg) {
@@ -47,9 +67,21 @@ std::optional<NodeOutput> NodeCore::onImage(const image_t& msg) {
   }
   const auto last = last_image_utime_.find(msg.camera_id);
   if (last != last_image_utime_.end() && msg.utime <= last->second) {
-    drop(DropReason::kOldImage, "camera '" + msg.camera_id + "': image older than the last");
-    return std::nullopt;
+    if (last->second - msg.utime <= timing_.restart_gap_us) {
+      drop(DropReason::kOldImage, "camera '" + msg.camera_id + "': image older than the last");
+      return std::nullopt;
+    }
+    // The publisher's clock started again: the buffers restart with its next samples
+    // (StampedBuffer) and the Localizer treats the step back as a frame without motion.
+    ++restarts_;
+    restart_text_ = "camera '" + msg.camera_id + "': image times went back " +
+                    seconds(last->second - msg.utime) + " s (publisher restarted; " +
+                    std::to_string(restarts_) + " restart(s))";
+    last_image_utime_.clear();
+    newest_image_utime_.clear();
   }
+  std::int64_t& newest = newest_image_utime_[msg.camera_id];
+  newest = std::max(newest, msg.utime);
   cv::Mat image;
   try {
     image = imageFromMessage(msg);
@@ -69,6 +101,8 @@ std::optional<NodeOutput> NodeCore::onImage(const image_t& msg) {
   std::optional<Pose3> robot_T_camera;
   if (poses != camera_poses_.end())
     robot_T_camera = poses->second.at(msg.utime, timing_.max_camera_pose_gap_us);
+  const auto fixed = static_camera_poses_.find(msg.camera_id);
+  if (!robot_T_camera && fixed != static_camera_poses_.end()) robot_T_camera = fixed->second;
   if (!robot_T_camera) {
     drop(DropReason::kNoCameraPose, "camera '" + msg.camera_id + "': no camera pose within 50 ms");
     return std::nullopt;
@@ -97,6 +131,47 @@ std::optional<NodeOutput> NodeCore::onImage(const image_t& msg) {
   return out;
 }
 
+void NodeCore::setStaticCameraPose(const std::string& camera_id, const Pose3& robot_T_camera) {
+  static_camera_poses_[camera_id] = robot_T_camera;
+}
+
+void NodeCore::restorePose(const GaussianPose& field_T_robot) {
+  LocalizationHint hint;
+  hint.kind = HintKind::kResetTo;
+  hint.t_us = std::numeric_limits<std::int64_t>::min();  // before any image of any clock
+  hint.poses = {field_T_robot};
+  pipeline_.queueHint(hint);
+}
+
+void NodeCore::setCondition(const std::string& key, const std::string& text) {
+  conditions_[key] = text;
+}
+
+std::string NodeCore::streamGaps() const {
+  if (newest_image_utime_.empty()) return "";
+  std::string newest_camera;
+  std::int64_t newest = std::numeric_limits<std::int64_t>::min();
+  for (const auto& [id, t] : newest_image_utime_)
+    if (t > newest) newest = t, newest_camera = id;
+  const std::int64_t gap = timing_.max_stream_gap_us;
+  std::string text;
+  const std::optional<std::int64_t> odometry = odometry_.newest();
+  if (odometry && std::abs(newest - *odometry) > gap)
+    append(text, "odometry " + seconds(std::abs(newest - *odometry)) + " s apart from the images");
+  for (const auto& [id, t] : newest_image_utime_) {
+    if (newest - t > gap)
+      append(text, "camera '" + id + "': images " + seconds(newest - t) + " s behind camera '" +
+                       newest_camera + "'");
+    const auto poses = camera_poses_.find(id);
+    const std::optional<std::int64_t> pose_t =
+        poses == camera_poses_.end() ? std::nullopt : poses->second.newest();
+    if (pose_t && std::abs(t - *pose_t) > gap)
+      append(text, "camera '" + id + "': camera poses " + seconds(std::abs(t - *pose_t)) +
+                       " s apart from its images");
+  }
+  return text;
+}
+
 localizer_status_t NodeCore::status() const {
   localizer_status_t msg{};
   msg.utime = last_utime_;
@@ -106,7 +181,12 @@ localizer_status_t NodeCore::status() const {
   msg.points_used = last_estimate_.points_used;
   msg.frames_processed = frames_processed_;
   drops_.fill(msg);
-  msg.message = problem_;
+  for (const auto& [key, text] : conditions_) append(msg.message, text);
+  append(msg.message, streamGaps());
+  append(msg.message, restart_text_);
+  // A refusal is "what is wrong now" until 1 s of images went through after it.
+  if (!problem_.empty() && last_utime_ - problem_utime_ <= timing_.max_stream_gap_us)
+    append(msg.message, "last drop: " + problem_);
   return msg;
 }
 
