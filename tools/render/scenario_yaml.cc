@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "field_models/yaml_indentation.h"
+#include "tools/render/faults.h"
 #include "tools/render/scenario.h"
 #include "tools/render/yaml_map.h"
 
@@ -271,6 +272,11 @@ Scenario readScenarioFile(const std::string& path) {
     m.read("sigma_y_m", h.sigma_y_m);
     m.read("sigma_theta_deg", h.sigma_theta_deg);
     s.hints.push_back(h);
+  });
+  forEachMap(top, "faults", [&](YamlMap& m) {
+    FaultConfig f;
+    readFault(m, f);
+    s.faults.push_back(f);
   });
   top.finish();
   try {
