@@ -73,7 +73,8 @@ void validateFault(const FaultConfig& f, size_t index) {
   require(f.exposure > 0.0, at + ".exposure: must be positive");
   require(f.color_temperature_k >= 1500.0 && f.color_temperature_k <= 15000.0,
           at + ".color_temperature_k: must be in [1500, 15000]");
-  require(f.ramp_s >= 0.0 && 2.0 * f.ramp_s <= f.end_s - f.start_s,
+  // The ramps only apply to a light change (the default would not fit a short other fault).
+  require(f.kind != "light_change" || (f.ramp_s >= 0.0 && 2.0 * f.ramp_s <= f.end_s - f.start_s),
           at + ".ramp_s: must be in [0, (end_s - start_s) / 2]");
   require(f.delay_ms >= 0.0 && f.delay_ms <= 2000.0, at + ".delay_ms: must be in [0, 2000]");
 }

@@ -50,7 +50,7 @@ TEST(FaultOptions, YamlNamesTheKeyAtFault) {
                                  "team: purple }\n"),
                        "faults[0].team: unknown colour 'purple'"));
   EXPECT_EQ(loadError("faults:\n  - { kind: camera_pose_delay, start_s: 1, end_s: 2, "
-                      "delay_ms: 50 }\n"),
+                      "delay_ms: 50 }\n  - { kind: odometry_dropout, start_s: 1, end_s: 1.1 }\n"),
             "");
 }
 
