@@ -273,11 +273,7 @@ Scenario readScenarioFile(const std::string& path) {
     m.read("sigma_theta_deg", h.sigma_theta_deg);
     s.hints.push_back(h);
   });
-  forEachMap(top, "faults", [&](YamlMap& m) {
-    FaultConfig f;
-    readFault(m, f);
-    s.faults.push_back(f);
-  });
+  forEachMap(top, "faults", [&](YamlMap& m) { readFault(m, s.faults.emplace_back()); });
   top.finish();
   try {
     validateScenario(s);
