@@ -115,9 +115,13 @@ Pose3 recordedPose(const Scenario& sc, const Trajectory& trajectory, const Pose3
   return recordedCameraPose(pose, sc.camera_pose_error, noise);
 }
 
-/// truth/faults.csv: one row per fault window, for measuring recovery from its end.
+/// truth/faults.csv: one row per fault window, for measuring recovery from its end (none without
+/// faults, also when an earlier render into the folder left one).
 void writeFaults(const Scenario& sc, const std::filesystem::path& path) {
-  if (sc.faults.empty()) return;
+  if (sc.faults.empty()) {
+    std::filesystem::remove(path);
+    return;
+  }
   CsvWriter out(path.string(), {"t_start_us", "t_end_us", "fault"});
   for (const FaultConfig& f : sc.faults) {
     out.writeRow({out.format(toMicros(f.start_s)), out.format(toMicros(f.end_s)), f.kind});
