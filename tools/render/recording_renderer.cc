@@ -185,7 +185,6 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
       png ? std::vector<int>{cv::IMWRITE_PNG_COMPRESSION, 3}
           : std::vector<int>{cv::IMWRITE_JPEG_QUALITY, sc.sensor.jpeg_quality};
   double t_prev = 0.0;
-  Pose2 odometry_received;  ///< what frames.csv records: stale during an odometry_dropout
   for (int i = 0; i < sc.frames; ++i) {
     const double t = i / sc.fps;
     const std::int64_t t_us = toMicros(t);
@@ -221,8 +220,12 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
     FrameRecord frame;
     frame.image = name;
     frame.t_us = t_us;
-    if (!activeFault(sc.faults, "odometry_dropout", t)) odometry_received = odometry.pose();
-    frame.odometry = odometry_received;
+    // An odometry_dropout leaves the frame without odometry, as the node sees a silent source.
+    if (activeFault(sc.faults, "odometry_dropout", t)) {
+      frame.odometry = std::nullopt;
+    } else {
+      frame.odometry = odometry.pose();
+    }
     frame.camera_id = rig.spec.id;
     frame.robot_T_camera = recordedPose(sc, trajectory, rig.spec.mount, cam_pose, t, pose_noise);
     rec.frames.push_back(frame);
