@@ -53,7 +53,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   for (const auto& f : recording.frames) {
-    if (!f.odometry.isFinite() || !f.robot_T_camera.isFinite()) fuzz::fail("non-finite frame");
+    if ((f.odometry && !f.odometry->isFinite()) || !f.robot_T_camera.isFinite())
+      fuzz::fail("non-finite frame");
   }
   for (const auto& g : recording.ground_truth) {
     if (!g.field_T_robot.isFinite()) fuzz::fail("non-finite ground truth");

@@ -1,5 +1,6 @@
 #include "tools/bench/tracking_recording.h"
 
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 #include <filesystem>
@@ -78,9 +79,12 @@ RunOutput runMcl(const RecordedRun& run, std::uint32_t seed) {
       mcl.resetUniform();
       started = true;
     }
-    // Robot-frame motion since the previous frame; none on the first one.
+    // Robot-frame motion since the previous frame; none on the first one or next to a frame
+    // without odometry (the benchmark recordings have odometry in every frame).
+    const std::optional<Pose2>& previous =
+        context.recording.frames[std::max(index - 1, 0)].odometry;
     const Pose2 motion =
-        k == 0 ? Pose2() : context.recording.frames[index - 1].odometry.inverse() * frame.odometry;
+        k == 0 || !previous || !frame.odometry ? Pose2() : previous->inverse() * *frame.odometry;
     mcl.update(motion, run.points[k]);
     out.cpu_us.push_back(cpuNowUs() - t0);
     FrameEstimate e;

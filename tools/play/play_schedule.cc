@@ -28,7 +28,8 @@ std::vector<PlayEvent> buildSchedule(const Recording& recording, std::size_t num
   std::vector<PlayEvent> events;
   for (std::size_t i = 0; i < recording.frames.size(); ++i) {
     const std::int64_t t = recording.frames[i].t_us;
-    events.push_back({t, PlayEvent::Kind::kOdometry, i});
+    // A row without odometry publishes none: the node sees the silence a robot's source leaves.
+    if (recording.frames[i].odometry) events.push_back({t, PlayEvent::Kind::kOdometry, i});
     events.push_back({t, PlayEvent::Kind::kCameraPose, i});
     events.push_back({t, PlayEvent::Kind::kImage, i});
   }

@@ -17,7 +17,8 @@ struct PlayEvent {
 
 /// Every message of a recorded folder in publication order: by recorded time; at equal times
 /// odometry and camera pose before the image (so the node has them when the image arrives),
-/// hints before the frame they precede, ground truth last.
+/// hints before the frame they precede, ground truth last. A frame without odometry (empty
+/// odom_* fields) has no odometry event.
 std::vector<PlayEvent> buildSchedule(const Recording& recording, std::size_t num_hints);
 
 }  // namespace houghloc

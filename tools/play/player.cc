@@ -68,7 +68,8 @@ void Player::publish(const PlayEvent& event, std::int64_t utime) {
   const std::string& p = options_.channel_prefix;
   switch (event.kind) {
     case PlayEvent::Kind::kOdometry: {
-      const odometry_t msg = odometryToMessage(utime, recording_.frames[event.index].odometry);
+      // buildSchedule() has no odometry event for a row without odometry.
+      const odometry_t msg = odometryToMessage(utime, *recording_.frames[event.index].odometry);
       lcm_.publish(p + "ODOMETRY", &msg);
       break;
     }

@@ -24,7 +24,9 @@ class RecordingError : public std::runtime_error {
 struct FrameRecord {
   std::string image;  ///< path relative to the folder
   std::int64_t t_us = 0;
-  Pose2 odometry;         ///< cumulative odometry pose
+  /// Cumulative odometry pose; none when the row leaves odom_x, odom_y and odom_theta empty (no
+  /// odometry received for this frame, as the node sees it when none lies near the image).
+  std::optional<Pose2> odometry = Pose2();
   Pose3 robot_T_camera;   ///< recorded camera pose (head motion)
   std::string camera_id;  ///< empty: camera.yaml; else cameras/<id>.yaml
 };
@@ -75,7 +77,7 @@ struct Recording {
 
 /// Reads every file of the folder that exists (frames.csv and a camera are required). Throws
 /// RecordingError naming file and line for malformed rows, non-numeric fields, times going
-/// backwards, unknown hint kinds and missing required files.
+/// backwards, odometry fields only partly empty, unknown hint kinds and missing required files.
 Recording readRecording(const std::string& folder);
 
 /// Writes the folder's CSV and YAML files (not the images); creates folders as needed.

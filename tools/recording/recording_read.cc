@@ -46,6 +46,22 @@ CameraIntrinsics loadCamera(const fs::path& path) {
   }
 }
 
+/// odom_x, odom_y, odom_theta (columns c[0..2]): all numbers, or all empty for "no odometry".
+std::optional<Pose2> readOdometry(const CsvTable& t, const CsvRow& row, const int c[3]) {
+  const char* const names[] = {"odom_x", "odom_y", "odom_theta"};
+  int empty = 0;
+  for (int i = 0; i < 3; ++i) empty += CsvTable::text(row, c[i]).empty() ? 1 : 0;
+  if (empty == 3) return std::nullopt;
+  for (int i = 0; i < 3 && empty > 0; ++i) {
+    if (CsvTable::text(row, c[i]).empty()) {
+      t.fail(row, std::string("column '") + names[i] +
+                      "' is empty but another odometry field is not (odom_x, odom_y and "
+                      "odom_theta must be all given or all empty)");
+    }
+  }
+  return Pose2(t.number(row, c[0]), t.number(row, c[1]), t.number(row, c[2]));
+}
+
 std::vector<FrameRecord> readFrames(const CsvTable& t) {
   std::vector<FrameRecord> frames;
   const int image = t.column("image");
@@ -59,7 +75,7 @@ std::vector<FrameRecord> readFrames(const CsvTable& t) {
     f.image = t.text(row, image);
     if (f.image.empty()) t.fail(row, "column 'image' is empty");
     f.t_us = t_us;
-    f.odometry = Pose2(t.number(row, c[0]), t.number(row, c[1]), t.number(row, c[2]));
+    f.odometry = readOdometry(t, row, c);
     f.robot_T_camera.x = t.number(row, c[3]);
     f.robot_T_camera.y = t.number(row, c[4]);
     f.robot_T_camera.z = t.number(row, c[5]);

@@ -35,11 +35,15 @@ void writeFrames(const fs::path& path, const std::vector<FrameRecord>& frames) {
   CsvWriter out(path.string(), header);
   for (const FrameRecord& f : frames) {
     const Pose3& c = f.robot_T_camera;
+    // No odometry for the frame: all three fields empty (docs/recording-format.md).
+    const auto odometry = [&](double Pose2::*member) {
+      return f.odometry ? out.format((*f.odometry).*member) : std::string();
+    };
     std::vector<std::string> row = {f.image,
                                     out.format(f.t_us),
-                                    out.format(f.odometry.x),
-                                    out.format(f.odometry.y),
-                                    out.format(f.odometry.theta),
+                                    odometry(&Pose2::x),
+                                    odometry(&Pose2::y),
+                                    odometry(&Pose2::theta),
                                     out.format(c.x),
                                     out.format(c.y),
                                     out.format(c.z),

@@ -9,8 +9,10 @@
 #include <random>
 #include <stdexcept>
 
+#include "tools/recording/csv.h"
 #include "tools/recording/recording.h"
 #include "tools/render/camera_rig.h"
+#include "tools/render/faults.h"
 #include "tools/render/image_renderer.h"
 #include "tools/render/moving_objects.h"
 #include "tools/render/odometry_model.h"
@@ -40,7 +42,10 @@ FrameView makeView(const Pose2& field_T_robot, const Pose3& robot_T_camera) {
 Eigen::Vector2d centreMotion(const RenderJob& job, const Pose3& mount, const Trajectory& trajectory,
                              const CameraModel& now, const Pose2& pose_now, double t) {
   const SensorConfig& sensor = job.scenario.sensor;
-  if (!sensor.motion_blur || trajectory.independentFrames()) return Eigen::Vector2d::Zero();
+  const bool blur_fault = activeFault(job.scenario.faults, "motion_blur", t) != nullptr;
+  if (!(sensor.motion_blur || blur_fault) || trajectory.independentFrames()) {
+    return Eigen::Vector2d::Zero();
+  }
   const double cx = 0.5 * (now.width() - 1), cy = 0.5 * (now.height() - 1);
   const Eigen::Vector3d ray = now.pixelRay(cx, cy);
   if (!std::isfinite(ray.x())) return Eigen::Vector2d::Zero();
@@ -49,7 +54,7 @@ Eigen::Vector2d centreMotion(const RenderJob& job, const Pose3& mount, const Tra
   const double range = ray.z() < -1e-3 ? std::min(6.0, -cam.z() / ray.z()) : 6.0;
   const Eigen::Vector3d p_robot = cam + range * ray;
   const Eigen::Vector2d p_field_xy = pose_now.transform(p_robot.head<2>());
-  const double t0 = t - 1e-3 * sensor.exposure_time_ms;
+  const double t0 = t - 1e-3 * exposureTimeAt(sensor, job.scenario.faults, t);
   const RobotState before = trajectory.at(t0);
   CameraModel then(now.intrinsics(), renderedCameraPose(mount, before, t0, job.scenario));
   const Eigen::Vector2d p_before = before.field_T_robot.inverse().transform(p_field_xy);
@@ -98,6 +103,32 @@ std::vector<CameraResources> makeCameraResources(const RenderJob& job) {
   return out;
 }
 
+/// The recorded camera pose (frames.csv cam_*): the rendered one, or during a camera_pose_delay
+/// fault the pose the same camera had delay_ms earlier; then the scenario's calibration error.
+Pose3 recordedPose(const Scenario& sc, const Trajectory& trajectory, const Pose3& mount,
+                   const Pose3& rendered, double t, std::mt19937& noise) {
+  Pose3 pose = rendered;
+  if (const FaultConfig* delay = activeFault(sc.faults, "camera_pose_delay", t)) {
+    const double then = std::max(0.0, t - 1e-3 * delay->delay_ms);
+    pose = renderedCameraPose(mount, trajectory.at(then), then, sc);
+  }
+  return recordedCameraPose(pose, sc.camera_pose_error, noise);
+}
+
+/// truth/faults.csv: one row per fault window, for measuring recovery from its end (none without
+/// faults, also when an earlier render into the folder left one).
+void writeFaults(const Scenario& sc, const std::filesystem::path& path) {
+  if (sc.faults.empty()) {
+    std::filesystem::remove(path);
+    return;
+  }
+  CsvWriter out(path.string(), {"t_start_us", "t_end_us", "fault"});
+  for (const FaultConfig& f : sc.faults) {
+    out.writeRow({out.format(toMicros(f.start_s)), out.format(toMicros(f.end_s)), f.kind});
+  }
+  out.close();
+}
+
 /// writeRecording() leaves out empty files; a rendered folder always has both truth files.
 void writeHeaderIfMissing(const std::filesystem::path& path, const char* header) {
   if (std::filesystem::exists(path)) return;
@@ -136,6 +167,8 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
   const VisibilityCounter visibility(job.field);
   std::mt19937 pose_noise(sc.seed * 19u + 1u);
   const double own_height = job.mount.z / 0.86;  // NAO: camera at 86% of the robot's height
+  const double others_height =
+      sc.scene.robot_height_m > 0.0 ? sc.scene.robot_height_m : defaultRobotHeight(job.field);
 
   Recording rec;
   for (const CameraResources& c : cameras) {
@@ -163,6 +196,7 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
     const FrameView view = makeView(state.field_T_robot, cam_pose);
     SceneObjects objects = statics;
     objects.append(movers.at(t, state.field_T_robot));
+    objects.append(faultRobots(sc.faults, t, state.field_T_robot, state.pan_rad, others_height));
     if (sc.scene.own_feet && state.fall_phase < 0.0) {
       addOwnFeet(state.field_T_robot, own_height, M_PI * sc.trajectory.gait_frequency_hz * t,
                  state.walk_speed_mps > 0.01, objects);
@@ -170,8 +204,9 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
     ImageRenderer(rig.rays, ground, room, box).render(view, objects, buffers);
     const Eigen::Vector2d motion =
         centreMotion(job, rig.spec.mount, trajectory, camera, state.field_T_robot, t);
-    const cv::Mat3b image = rig.sensor.apply(buffers.bgr, exposureAt(sc.sensor, t), motion,
-                                             static_cast<std::uint64_t>(sc.seed) * 1000003ull + i);
+    const cv::Mat3b image =
+        rig.sensor.apply(buffers.bgr, applyLightFaults(exposureAt(sc.sensor, t), sc.faults, t),
+                         motion, static_cast<std::uint64_t>(sc.seed) * 1000003ull + i);
     char name[32];
     std::snprintf(name, sizeof(name), "images/%06d.%s", i, png ? "png" : "jpg");
     if (!cv::imwrite((out / name).string(), image, params)) {
@@ -185,9 +220,14 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
     FrameRecord frame;
     frame.image = name;
     frame.t_us = t_us;
-    frame.odometry = odometry.pose();
+    // An odometry_dropout leaves the frame without odometry, as the node sees a silent source.
+    if (activeFault(sc.faults, "odometry_dropout", t)) {
+      frame.odometry = std::nullopt;
+    } else {
+      frame.odometry = odometry.pose();
+    }
     frame.camera_id = rig.spec.id;
-    frame.robot_T_camera = recordedCameraPose(cam_pose, sc.camera_pose_error, pose_noise);
+    frame.robot_T_camera = recordedPose(sc, trajectory, rig.spec.mount, cam_pose, t, pose_noise);
     rec.frames.push_back(frame);
     rec.ground_truth.push_back({t_us, state.field_T_robot});
     if (progress) progress(i + 1, sc.frames);
@@ -200,6 +240,7 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
   writeHeaderIfMissing(out / "truth" / "visible.csv",
                        "t_us,feature,visible_length_m,direction_deg");
   writeHeaderIfMissing(out / "truth" / "events.csv", "t_us,event");
+  writeFaults(sc, out / "truth" / "faults.csv");
 }
 
 }  // namespace houghloc

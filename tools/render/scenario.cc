@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "tools/render/faults.h"
+
 namespace houghloc {
 namespace {
 
@@ -73,6 +75,7 @@ void validateScenario(const Scenario& s) {
     require(oneOf(s.hints[i].kind, {"UNKNOWN", "RESET_TO", "ADD", "OWN_HALF", "MIRROR"}),
             "hints[" + std::to_string(i) + "].kind: unknown kind '" + s.hints[i].kind + "'");
   }
+  for (size_t i = 0; i < s.faults.size(); ++i) validateFault(s.faults[i], i);
 }
 
 }  // namespace houghloc

@@ -136,6 +136,29 @@ struct CameraPoseError {
   double noise_deg = 0.0;  ///< per-frame Gaussian noise on roll, pitch and yaw
 };
 
+/// A fault injected from start_s to end_s (docs/render.md "Faults"), for measuring how the
+/// localizer copes and how soon it recovers after end_s (truth/faults.csv). Only the parameters
+/// of the fault's kind apply; the scenario YAML rejects the others.
+struct FaultConfig {
+  /// odometry_dropout: frames.csv repeats the last odometry received before start_s, then
+  ///   jumps by everything walked meanwhile (cumulative odometry loses nothing).
+  /// robots_in_view: robots standing in front of the camera, walking along with the robot.
+  /// motion_blur: exposure_time_ms instead of the sensor's.
+  /// light_change: the light's brightness and colour change (ramped in and out).
+  /// camera_pose_delay: frames.csv cam_* is the camera pose of delay_ms earlier.
+  std::string kind;
+  double start_s = 0.0, end_s = 1.0;
+  int robots = 3;            ///< robots_in_view: how many
+  double distance_m = 1.0;   ///< robots_in_view: from the robot's centre
+  double spread_deg = 40.0;  ///< robots_in_view: bearings spread evenly over this, about the pan
+  std::string team = "red";  ///< robots_in_view: jersey colour
+  double exposure_time_ms = 40.0;       ///< motion_blur
+  double exposure = 0.35;               ///< light_change: brightness gain factor
+  double color_temperature_k = 3000.0;  ///< light_change: light colour meanwhile
+  double ramp_s = 0.2;                  ///< light_change: from start_s in, and out ending at end_s
+  double delay_ms = 100.0;              ///< camera_pose_delay
+};
+
 struct HintConfig {
   double t_s = 0.0;
   std::string kind = "RESET_TO";  ///< UNKNOWN | RESET_TO | ADD | OWN_HALF | MIRROR
@@ -161,6 +184,7 @@ struct Scenario {
   SensorConfig sensor;
   CameraPoseError camera_pose_error;
   std::vector<HintConfig> hints;
+  std::vector<FaultConfig> faults;  ///< none by default
 };
 
 /// Reads a scenario YAML (cv::FileStorage). Throws std::runtime_error naming the file and the

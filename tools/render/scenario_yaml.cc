@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "field_models/yaml_precheck.h"
+#include "tools/render/faults.h"
 #include "tools/render/scenario.h"
 #include "tools/render/yaml_map.h"
 
@@ -272,6 +273,7 @@ Scenario readScenarioFile(const std::string& path) {
     m.read("sigma_theta_deg", h.sigma_theta_deg);
     s.hints.push_back(h);
   });
+  forEachMap(top, "faults", [&](YamlMap& m) { readFault(m, s.faults.emplace_back()); });
   top.finish();
   try {
     validateScenario(s);

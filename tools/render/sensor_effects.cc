@@ -70,7 +70,8 @@ cv::Mat3b SensorModel::apply(const cv::Mat3f& scene, const ExposureState& exposu
   } else {
     scene.copyTo(img);
   }
-  if (config_.motion_blur && motion_px.norm() > 0.5) {
+  // motion_px is zero without motion blur (sensor.motion_blur off and no motion_blur fault).
+  if (motion_px.norm() > 0.5) {
     cv::filter2D(img, img, -1, motionKernel(motion_px), cv::Point(-1, -1), 0.0, cv::BORDER_REFLECT);
   }
   if (config_.optics_blur_px > 0.0) {

@@ -25,7 +25,7 @@ class SensorModel {
   SensorModel(const SensorConfig& config, int width, int height);
 
   /// scene: CV_32FC3 at supersampled size; motion_px: image motion of the centre pixel during
-  /// the exposure (px at the output size).
+  /// the exposure (px at the output size; zero: no motion blur).
   cv::Mat3b apply(const cv::Mat3f& scene, const ExposureState& exposure,
                   const Eigen::Vector2d& motion_px, std::uint64_t noise_seed);
 

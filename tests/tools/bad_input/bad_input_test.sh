@@ -81,6 +81,8 @@ copy; sed -i '1s/odom_x/odom_q/' c/frames.csv
 offline csv_missing_header_column fail "column 'odom_x'"
 copy; sed -i '3s/^\([^,]*,[^,]*\),[^,]*,/\1,abc,/' c/frames.csv
 offline csv_text_in_number fail "c/frames.csv:3: column 'odom_x': 'abc' is not a finite number"
+copy; awk -F, -v OFS=, 'NR == 3 { $4 = "" } { print }' base/frames.csv >c/frames.csv
+offline frames_odometry_partly_empty fail "c/frames.csv:3: column 'odom_y' is empty"
 col=3
 for name in odom_x odom_y odom_theta cam_x cam_y cam_z cam_roll cam_pitch cam_yaw; do
   for bad in nan inf -inf 1e309; do

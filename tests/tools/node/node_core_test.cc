@@ -77,7 +77,7 @@ TEST_F(NodeCoreTest, GivesTheOfflinePoses) {
   std::size_t with_pose = 0;
   for (std::size_t i = 0; i < rec_.frames.size(); ++i) {
     const FrameRecord& f = rec_.frames[i];
-    core->onOdometry(odometryToMessage(f.t_us, f.odometry));
+    core->onOdometry(odometryToMessage(f.t_us, f.odometry.value()));
     core->onCameraPose(cameraPoseToMessage(f.t_us, f.camera_id, f.robot_T_camera));
     // BGR8: the pixels houghloc-offline reads (YUYV would subsample the chroma).
     const std::optional<NodeOutput> result = core->onImage(imageMessage(f, 0));

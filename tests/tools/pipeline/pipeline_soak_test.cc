@@ -69,12 +69,12 @@ class LoopedRun {
   std::pair<PipelineFrame, const cv::Mat*> step() {
     const std::vector<LoadedFrame>& loop = loops_[loop_index_ % loops_.size()];
     const LoadedFrame& loaded = loop[frame_index_];
-    const Pose2 start_inverse = loop.front().record.odometry.inverse();
+    const Pose2 start_inverse = loop.front().record.odometry.value().inverse();
     PipelineFrame frame;
     frame.t_us = t_offset_us_ + (loaded.record.t_us - loop.front().record.t_us);
     frame.camera_id = loaded.record.camera_id;
     frame.robot_T_camera = loaded.record.robot_T_camera;
-    frame.odometry = odometry_offset_ * (start_inverse * loaded.record.odometry);
+    frame.odometry = odometry_offset_ * (start_inverse * loaded.record.odometry.value());
     if (++frame_index_ == static_cast<int>(loop.size())) {
       frame_index_ = 0;
       ++loop_index_;
@@ -133,10 +133,11 @@ TEST(PipelineSoak, TwentyThousandFramesKeepMemoryHypothesesAndTimeBounded) {
     }
   }
   const double rss_growth = residentMegabytes() - rss_after_first;
-  std::printf("soak: resident growth after frame %d: %.2f MB; CPU first %d frames %.2f s, last "
-              "%.2f s (ratio %.3f); most hypotheses %zu of %d; frames with points %d\n",
-              kWindow, rss_growth, kWindow, cpu_first, cpu_last, cpu_last / cpu_first,
-              most_hypotheses, max_hypotheses, frames_with_points);
+  std::printf(
+      "soak: resident growth after frame %d: %.2f MB; CPU first %d frames %.2f s, last "
+      "%.2f s (ratio %.3f); most hypotheses %zu of %d; frames with points %d\n",
+      kWindow, rss_growth, kWindow, cpu_first, cpu_last, cpu_last / cpu_first, most_hypotheses,
+      max_hypotheses, frames_with_points);
   EXPECT_LT(rss_growth, 5.0);
   EXPECT_LE(most_hypotheses, static_cast<std::size_t>(max_hypotheses));
   EXPECT_LE(cpu_last, 1.25 * cpu_first);

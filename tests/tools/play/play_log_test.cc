@@ -55,9 +55,10 @@ TEST(PlayLog, PublishesEveryMessageRestamped) {
       ASSERT_GT(msg.decode(event->data, 0, event->datalen), 0);
       if (base < 0) base = msg.utime - t0;
       const FrameRecord& f = rec.frames[odo_index++];
+      ASSERT_TRUE(f.odometry.has_value());
       EXPECT_EQ(msg.utime, base + f.t_us);
-      EXPECT_DOUBLE_EQ(msg.x, f.odometry.x);
-      EXPECT_DOUBLE_EQ(msg.theta, f.odometry.theta);
+      EXPECT_DOUBLE_EQ(msg.x, f.odometry->x);
+      EXPECT_DOUBLE_EQ(msg.theta, f.odometry->theta);
     } else if (event->channel == "T_IMAGE") {
       image_t msg;
       ASSERT_GT(msg.decode(event->data, 0, event->datalen), 0);

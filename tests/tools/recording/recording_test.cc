@@ -59,6 +59,7 @@ Recording makeRecording() {
     f.image = "images/" + std::to_string(i) + ".png";
     f.t_us = 1'000'000'000'000 + 33'333 * i;
     f.odometry = Pose2(0.1 * i + 1.0 / 3.0, -2.0 / 7.0 * i, 3.14159 - 0.7 * i);
+    if (i == 3) f.odometry = std::nullopt;  // a frame without odometry: empty fields
     f.robot_T_camera = top.robot_T_camera;
     f.robot_T_camera.yaw = 1e-300 * i - 0.123456789012345678;
     f.camera_id = i % 2 ? "bottom" : "";
@@ -101,7 +102,8 @@ TEST_F(RecordingTest, WriteReadRoundTripIsExact) {
     const FrameRecord &a = in.frames[i], &b = out.frames[i];
     EXPECT_EQ(a.image, b.image);
     EXPECT_EQ(a.t_us, b.t_us);
-    expectPose2Equal(a.odometry, b.odometry);
+    ASSERT_EQ(a.odometry.has_value(), b.odometry.has_value());
+    if (a.odometry) expectPose2Equal(*a.odometry, *b.odometry);
     EXPECT_EQ(a.robot_T_camera.x, b.robot_T_camera.x);
     EXPECT_EQ(a.robot_T_camera.z, b.robot_T_camera.z);
     EXPECT_EQ(a.robot_T_camera.pitch, b.robot_T_camera.pitch);
@@ -174,8 +176,10 @@ TEST_F(RecordingTest, CommentsBlankLinesAndExtraColumnsAreAccepted) {
   ASSERT_EQ(r.frames.size(), 2u);
   EXPECT_EQ(r.frames[0].image, "a.png");
   EXPECT_EQ(r.frames[0].t_us, 100);
-  EXPECT_EQ(r.frames[0].odometry.x, 1.0);
-  EXPECT_EQ(r.frames[0].odometry.theta, 1.5);
+  ASSERT_TRUE(r.frames[0].odometry);
+  EXPECT_EQ(r.frames[0].odometry->x, 1.0);
+  EXPECT_EQ(r.frames[0].odometry->y, 2.0);
+  EXPECT_EQ(r.frames[0].odometry->theta, 1.5);
   EXPECT_EQ(r.frames[0].robot_T_camera.yaw, 0.1);
   EXPECT_EQ(r.frames[0].robot_T_camera.x, 0.05);
   EXPECT_TRUE(r.frames[0].camera_id.empty());
@@ -183,6 +187,36 @@ TEST_F(RecordingTest, CommentsBlankLinesAndExtraColumnsAreAccepted) {
   EXPECT_EQ(r.ground_truth[0].field_T_robot.x, 1.5);
   EXPECT_FALSE(r.field);
   EXPECT_TRUE(r.hints.empty());
+}
+
+TEST_F(RecordingTest, EmptyOdometryFieldsMeanNoOdometry) {
+  write("frames.csv", std::string(kFramesHeader) + "a.png,1,0.5,-1,0.25,0,0,0.5,0,0,0\n" +
+                          "b.png,2,,,,0,0,0.5,0,0,0\n" + "c.png,3, , ,,0,0,0.5,0,0,0\n" +
+                          "d.png,4,0,0,0,0,0,0.5,0,0,0\n");
+  const Recording r = readRecording(dir_.string());
+  ASSERT_EQ(r.frames.size(), 4u);
+  ASSERT_TRUE(r.frames[0].odometry);
+  EXPECT_EQ(r.frames[0].odometry->x, 0.5);
+  EXPECT_EQ(r.frames[0].odometry->y, -1.0);
+  EXPECT_EQ(r.frames[0].odometry->theta, 0.25);
+  EXPECT_FALSE(r.frames[1].odometry);
+  EXPECT_FALSE(r.frames[2].odometry);  // fields of spaces are empty too
+  EXPECT_EQ(r.frames[2].robot_T_camera.z, 0.5);
+  ASSERT_TRUE(r.frames[3].odometry);
+  EXPECT_EQ(r.frames[3].odometry->x, 0.0);
+}
+
+TEST_F(RecordingTest, PartlyEmptyOdometryNamesFileLineAndColumn) {
+  write("frames.csv", std::string(kFramesHeader) + "a.png,1,0,0,0,0,0,0.5,0,0,0\n" +
+                          "b.png,2,1,,0,0,0,0.5,0,0,0\n");
+  expectError("frames.csv:3:", "column 'odom_y' is empty");
+  write("frames.csv", std::string(kFramesHeader) + "a.png,1,,,0.5,0,0,0.5,0,0,0\n");
+  expectError("frames.csv:2:", "column 'odom_x' is empty");
+  write("frames.csv", std::string(kFramesHeader) + "a.png,1,1,2,,0,0,0.5,0,0,0\n");
+  expectError("frames.csv:2:", "column 'odom_theta' is empty");
+  // The camera pose has no such rule: an empty field there is not a number.
+  write("frames.csv", std::string(kFramesHeader) + "a.png,1,,,,0,0,0.5,0,,0\n");
+  expectError("frames.csv:2:", "'cam_pitch': '' is not a finite number");
 }
 
 TEST_F(RecordingTest, MalformedRowNamesFileAndLine) {
