@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
 #include <sstream>
 #include <string>
 
@@ -76,6 +77,10 @@ struct Axis {
   testing::StartPlace start;
   int index;  ///< position in the matrix: seeds the walk and the hints
 };
+
+void PrintTo(const Axis& axis, std::ostream* os) {
+  *os << axis.field << ", " << axis.view << ", " << testing::startPlaceName(axis.start);
+}
 
 class HintMatrix : public ::testing::TestWithParam<Axis> {};
 
