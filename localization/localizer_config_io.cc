@@ -99,7 +99,11 @@ ConfigSection updateSection(PointUpdateConfig& c) {
                     HL_MEMBER(c, min_points),
                     HL_MEMBER(c, likelihood_sigma_m),
                     HL_MEMBER(c, outlier_chi2),
-                    HL_MEMBER(c, inlier_m)};
+                    HL_MEMBER(c, inlier_m),
+                    HL_MEMBER(c, search_min_sigma_m),
+                    HL_MEMBER(c, search_step_m),
+                    HL_MEMBER(c, search_sigmas),
+                    HL_MEMBER(c, search_max_starts)};
   return section;
 }
 
