@@ -62,11 +62,17 @@ void HypothesisTracker::predict(std::int64_t t_us, const std::optional<Pose2>& o
   stats_.seconds_without_points += step.dt_s;
   blind_since_injection_ =
       blind_since_injection_ || stats_.seconds_without_points > config_.lost_without_points_s;
+  auto move = [&](GaussianPose* pose) {
+    if (step.has_motion) predictWithMotion(step.motion, step.dt_s, config_.motion, pose);
+    if (step.unknown_s > 0.0) inflateUnknownMotion(step.unknown_s, config_.motion, pose);
+  };
   for (TrackedHypothesis& h : hypotheses_) {
-    if (step.has_motion) predictWithMotion(step.motion, step.dt_s, config_.motion, &h.pose);
-    if (step.unknown_s > 0.0) inflateUnknownMotion(step.unknown_s, config_.motion, &h.pose);
+    move(&h.pose);
     ++h.age_frames;
   }
+  hint_prior_age_s_ += step.dt_s;
+  if (hint_prior_age_s_ > config_.hint_prior_s) hint_prior_.clear();
+  for (GaussianPose& p : hint_prior_) move(&p);
 }
 
 void HypothesisTracker::correct(const GroundPoints& points) {
@@ -77,6 +83,9 @@ void HypothesisTracker::correct(const GroundPoints& points) {
   if (stats_.points_in > 0) stats_.seconds_without_points = 0.0;
   if (hypotheses_.empty() || stats_.points_in < config_.update.min_points) return;
 
+  // The best hypothesis before this frame's evidence (weights are normalised, best first).
+  const int best_id = hypotheses_.front().id;
+  const double best_weight = hypotheses_.front().pose.weight;
   std::vector<double> log_likelihood(hypotheses_.size());
   const bool judge = stats_.points_in >= config_.min_points_to_judge;
   for (size_t k = 0; k < hypotheses_.size(); ++k) {
@@ -104,6 +113,14 @@ void HypothesisTracker::correct(const GroundPoints& points) {
     hypotheses_[k].pose.weight *= std::isfinite(ratio) ? ratio : 0.0;
   }
   finishSet();
+  // The best hypothesis lost most of its weight to others in one frame: the view changed in a
+  // way the held hypotheses disagree on, so ask whether a pose not held explains it better.
+  double best_weight_now = 0.0;
+  for (const TrackedHypothesis& h : hypotheses_) {
+    if (h.id == best_id) best_weight_now = h.pose.weight;
+  }
+  weight_drop_since_injection_ = weight_drop_since_injection_ ||
+                                 best_weight_now < config_.best_weight_drop_ratio * best_weight;
   if (!hypotheses_.empty()) {
     stats_.best_inlier_share = hypotheses_.front().inlier_share;
     stats_.points_used = hypotheses_.front().points_associated;
@@ -116,9 +133,12 @@ void HypothesisTracker::injectHypotheses(const std::vector<GaussianPose>& poses)
   // places, and only history tells them apart.
   addPoses(poses, onlyPeriodic() ? config_.periodic_injected_share : config_.injected_share);
   markInjected();
+  // A hint is checked by a global run on a frame with enough points to judge it.
+  if (stats_.points_in >= config_.min_points_to_judge) global_after_hint_ = false;
 }
 
 void HypothesisTracker::markInjected() {
+  weight_drop_since_injection_ = false;
   seconds_since_injection_ = 0.0;
   jump_since_injection_ = false;
   blind_since_injection_ = false;
@@ -161,24 +181,41 @@ void HypothesisTracker::addPoses(const std::vector<GaussianPose>& poses, double 
   finishSet();
 }
 
-double HypothesisTracker::belief(const GaussianPose& pose) const {
-  if (hypotheses_.empty()) return 1.0;
-  double sum = 0.0;
-  for (const TrackedHypothesis& h : hypotheses_) sum += std::max(0.0, h.pose.weight);
-  if (!(sum > 0.0) || !std::isfinite(sum)) return 1.0;
-  const double spread_m = config_.belief_spread_m * config_.belief_spread_m;
-  const double spread_rad = config_.belief_spread_rad * config_.belief_spread_rad;
-  const Eigen::Matrix3d spread = Eigen::Vector3d(spread_m, spread_m, spread_rad).asDiagonal();
-  double density = 0.0;
-  for (const TrackedHypothesis& h : hypotheses_) {
-    const Eigen::Matrix3d s = h.pose.covariance + pose.covariance + spread;
-    const Eigen::Vector3d d = poseDifference(pose.mean, h.pose.mean);
+namespace {
+
+/// sum_j w_j exp(-chi2_j / 2) / sum_j w_j over `poses` (docs/tracking.md "How weights flow").
+template <typename Range, typename PoseOf>
+double mixtureAt(const GaussianPose& pose, const Range& poses, PoseOf pose_of,
+                 const Eigen::Matrix3d& spread) {
+  double sum = 0.0, density = 0.0;
+  for (const auto& item : poses) sum += std::max(0.0, pose_of(item).weight);
+  if (!(sum > 0.0) || !std::isfinite(sum)) return -1.0;
+  for (const auto& item : poses) {
+    const GaussianPose& h = pose_of(item);
+    const Eigen::Matrix3d s = h.covariance + pose.covariance + spread;
+    const Eigen::Vector3d d = poseDifference(pose.mean, h.mean);
     const Eigen::LDLT<Eigen::Matrix3d> ldlt(s);
     if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) continue;
     const double chi2 = d.dot(ldlt.solve(d));
-    if (std::isfinite(chi2)) density += std::max(0.0, h.pose.weight) / sum * std::exp(-0.5 * chi2);
+    if (std::isfinite(chi2)) density += std::max(0.0, h.weight) / sum * std::exp(-0.5 * chi2);
   }
-  return std::clamp(std::max(config_.belief_floor, density), 0.0, 1.0);
+  return density;
+}
+
+}  // namespace
+
+double HypothesisTracker::belief(const GaussianPose& pose) const {
+  if (hypotheses_.empty()) return 1.0;
+  const double spread_m = config_.belief_spread_m * config_.belief_spread_m;
+  const double spread_rad = config_.belief_spread_rad * config_.belief_spread_rad;
+  const Eigen::Matrix3d spread = Eigen::Vector3d(spread_m, spread_m, spread_rad).asDiagonal();
+  const double set = mixtureAt(
+      pose, hypotheses_, [](const TrackedHypothesis& h) -> const GaussianPose& { return h.pose; },
+      spread);
+  if (set < 0.0) return 1.0;
+  const double hint = mixtureAt(
+      pose, hint_prior_, [](const GaussianPose& p) -> const GaussianPose& { return p; }, spread);
+  return std::clamp(std::max({config_.belief_floor, set, hint}), 0.0, 1.0);
 }
 
 void HypothesisTracker::finishSet() {
@@ -200,8 +237,10 @@ bool HypothesisTracker::dropAlarm(const TrackedHypothesis& h) const {
 }
 
 bool HypothesisTracker::onlyPeriodic() const {
-  return !hypotheses_.empty() && !jump_since_injection_ && !blind_since_injection_ &&
-         !bestIsLost() && hypotheses_.front().pose.weight >= config_.low_best_weight;
+  const bool check_hint = global_after_hint_ && stats_.points_in >= config_.min_points_to_judge;
+  return !hypotheses_.empty() && !check_hint && !weight_drop_since_injection_ &&
+         !jump_since_injection_ && !blind_since_injection_ && !bestIsLost() &&
+         hypotheses_.front().pose.weight >= config_.low_best_weight;
 }
 
 bool HypothesisTracker::needsGlobalHypotheses() const {

@@ -52,6 +52,10 @@ class HypothesisTracker {
   void injectHypotheses(const std::vector<GaussianPose>& poses);
   /// DESIGN §7 hints: UNKNOWN, RESET_TO, ADD, OWN_HALF, MIRROR.
   void applyHint(const LocalizationHint& hint);
+  /// The prior of a new pose (docs/tracking.md "How weights flow"): the current mixture at `pose`
+  /// (peak-normalised, 0..1, at least belief_floor), the larger of the set's and the recent
+  /// RESET_TO hint's (TrackerConfig::hint_prior_s); 1 when the set is empty.
+  double belief(const GaussianPose& pose) const;
 
   /// True when global hypotheses would help now: none left, an odometry jump, the best hypothesis
   /// disagrees with the observations for several frames or explains suddenly less than it used
@@ -70,8 +74,6 @@ class HypothesisTracker {
  private:
   /// New hypotheses by the one weight rule; `share` is the set's share they may take at most.
   void addPoses(const std::vector<GaussianPose>& poses, double share);
-  /// The current mixture at `pose` (peak-normalised, 0..1, at least belief_floor); 1 when empty.
-  double belief(const GaussianPose& pose) const;
   void markInjected();
   bool bestIsLost() const;
   /// The hypothesis' inlier share dropped suddenly (share_drop above the alarm): kidnap suspect.
@@ -89,6 +91,12 @@ class HypothesisTracker {
   double seconds_since_injection_ = 0.0;
   bool jump_since_injection_ = false;
   bool blind_since_injection_ = false;  ///< no points for lost_without_points_s meanwhile
+  /// The last RESET_TO hint's poses, moved by odometry (TrackerConfig::hint_prior_s), and their
+  /// age.
+  std::vector<GaussianPose> hint_prior_;
+  double hint_prior_age_s_ = 0.0;
+  bool global_after_hint_ = false;            ///< the hint is to be checked by a global run
+  bool weight_drop_since_injection_ = false;  ///< TrackerConfig::best_weight_drop_ratio
 };
 
 }  // namespace houghloc

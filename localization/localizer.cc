@@ -34,6 +34,57 @@ std::vector<GaussianPose> toGaussianPoses(const std::vector<PoseHypothesis>& hyp
   return out;
 }
 
+/// Every line, arc and mark has a twin at (-x, -y) (within 1 cm): the map is point-symmetric.
+bool pointSymmetric(const FieldModel& field) {
+  const auto near = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a - b).norm() < 0.01;
+  };
+  const bool segments = std::all_of(field.segments.begin(), field.segments.end(), [&](auto& s) {
+    return std::any_of(field.segments.begin(), field.segments.end(), [&](auto& t) {
+      return (near(-s.a, t.a) && near(-s.b, t.b)) || (near(-s.a, t.b) && near(-s.b, t.a));
+    });
+  });
+  const bool arcs = std::all_of(field.arcs.begin(), field.arcs.end(), [&](auto& a) {
+    return std::any_of(field.arcs.begin(), field.arcs.end(), [&](auto& b) {
+      return near(-a.center, b.center) && std::abs(a.radius - b.radius) < 0.01;
+    });
+  });
+  const bool marks = std::all_of(field.marks.begin(), field.marks.end(), [&](auto& m) {
+    return std::any_of(field.marks.begin(), field.marks.end(),
+                       [&](auto& n) { return near(-m.center, n.center); });
+  });
+  return segments && arcs && marks;
+}
+
+/// On a point-symmetric map the global localizer lists each pair of twins once when it has more
+/// candidates than slots, so a pose can come without its twin; both explain the frame equally
+/// well, so the missing twin is added with the same weight and the tracker's belief decides.
+void addMissingTwins(const TrackerConfig& config, std::vector<GaussianPose>* poses) {
+  const size_t found = poses->size();
+  for (size_t k = 0; k < found; ++k) {
+    const GaussianPose twin = mirrored((*poses)[k]);
+    const bool listed = std::any_of(poses->begin(), poses->end(), [&](const GaussianPose& p) {
+      return (p.mean.translation() - twin.mean.translation()).norm() <= config.mirror_tolerance_m &&
+             std::abs(angleDifference(p.mean.theta, twin.mean.theta)) <=
+                 config.mirror_tolerance_rad;
+    });
+    if (!listed) poses->push_back(twin);
+  }
+}
+
+/// The `count` poses with the largest belief x likelihood: the product the tracker weighs them
+/// by, so a cut by the likelihood alone cannot drop the pose the belief favours.
+void keepMostProbable(const HypothesisTracker& tracker, int count,
+                      std::vector<GaussianPose>* poses) {
+  if (static_cast<int>(poses->size()) <= count) return;
+  std::vector<std::pair<double, GaussianPose>> scored;
+  for (const GaussianPose& p : *poses) scored.emplace_back(tracker.belief(p) * p.weight, p);
+  std::stable_sort(scored.begin(), scored.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  poses->clear();
+  for (int k = 0; k < std::max(0, count); ++k) poses->push_back(scored[k].second);
+}
+
 /// A camera close to the ground or tilted far from its upright pose: the robot has fallen.
 bool cameraSaysFallen(const std::vector<Pose3>& robot_T_cameras, const LocalizerConfig& config) {
   for (const Pose3& camera : robot_T_cameras) {
@@ -79,7 +130,8 @@ Localizer::Localizer(const FieldModel& field, const LocalizerConfig& config)
     : config_(config),
       field_(std::make_shared<const FieldModel>(field)),
       global_(std::make_shared<const GlobalHoughLocalizer>(field, config.global)),
-      tracker_(field, config.tracker) {}
+      tracker_(field, config.tracker),
+      point_symmetric_(pointSymmetric(field)) {}
 
 Localizer::~Localizer() = default;
 Localizer::Localizer(const Localizer&) = default;
@@ -115,7 +167,9 @@ LocalizationEstimate Localizer::process(std::int64_t t_us, const std::optional<P
     global_ran = true;
     // The tracker weighs them by its belief (the pre-fall pose inflated by the fall's unknown
     // motion after getting up): that tells the field's mirror twins apart.
-    const std::vector<GaussianPose> poses = toGaussianPoses(found, config_.max_injected_hypotheses);
+    std::vector<GaussianPose> poses = toGaussianPoses(found, static_cast<int>(found.size()));
+    if (point_symmetric_) addMissingTwins(config_.tracker, &poses);
+    keepMostProbable(tracker_, config_.max_injected_hypotheses, &poses);
     if (!poses.empty()) {
       const auto inject_start = std::chrono::steady_clock::now();
       tracker_.injectHypotheses(poses);

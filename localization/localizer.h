@@ -22,7 +22,8 @@ class GlobalHoughLocalizer;
 struct LocalizerConfig {
   GlobalHoughConfig global;
   TrackerConfig tracker;
-  /// Global hypotheses handed to the tracker per injection (the best ones of locate()).
+  /// Global hypotheses handed to the tracker per injection (the best ones of locate()); on a
+  /// point-symmetric map the missing twin of each is added (both fit the frame equally well).
   int max_injected_hypotheses = 8;
   /// A camera lower than this above the ground, rolled more than fallen_tilt_rad or pitched
   /// up more than that means the robot lies on the ground: odometry and points are not used.
@@ -105,6 +106,7 @@ class Localizer {
   std::shared_ptr<const FieldModel> field_;
   std::shared_ptr<const GlobalHoughLocalizer> global_;
   HypothesisTracker tracker_;
+  bool point_symmetric_ = false;  ///< every map feature has a twin at (-x, -y)
   std::int64_t last_t_us_ = 0;
   bool fallen_ = false;
   /// Frames on which the global localizer runs even if the tracker does not ask (after a fall).

@@ -99,7 +99,11 @@ ConfigSection updateSection(PointUpdateConfig& c) {
                     HL_MEMBER(c, min_points),
                     HL_MEMBER(c, likelihood_sigma_m),
                     HL_MEMBER(c, outlier_chi2),
-                    HL_MEMBER(c, inlier_m)};
+                    HL_MEMBER(c, inlier_m),
+                    HL_MEMBER(c, search_min_sigma_m),
+                    HL_MEMBER(c, search_step_m),
+                    HL_MEMBER(c, search_sigmas),
+                    HL_MEMBER(c, search_max_starts)};
   return section;
 }
 
@@ -115,7 +119,8 @@ ConfigSection trackerSection(TrackerConfig& c) {
                     HL_MEMBER(c, lost_without_points_s), HL_MEMBER(c, mirror_tolerance_m),
                     HL_MEMBER(c, mirror_tolerance_rad),  HL_MEMBER(c, ambiguous_weight_ratio),
                     HL_MEMBER(c, own_half_margin_m),     HL_MEMBER(c, belief_floor),
-                    HL_MEMBER(c, belief_spread_m),       HL_MEMBER(c, belief_spread_rad)};
+                    HL_MEMBER(c, belief_spread_m),       HL_MEMBER(c, belief_spread_rad),
+                    HL_MEMBER(c, hint_prior_s),          HL_MEMBER(c, best_weight_drop_ratio)};
   section.children = {
       {"motion",
        {{HL_MEMBER(c.motion, trans_var_per_m), HL_MEMBER(c.motion, trans_var_per_rad),

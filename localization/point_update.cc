@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "localization/point_update_search.h"
+
 namespace houghloc {
 namespace {
 
@@ -104,7 +106,9 @@ PointUpdateResult updateWithGroundPoints(const GaussianPose& prior,
   }
   const Eigen::Matrix3d prior_info = informationOf(prior.covariance);
   const double inv_var = 1.0 / (cfg.point_sigma_m * cfg.point_sigma_m);
-  Pose2 x = prior.mean;
+  // A wide prior starts where the points fit best along its axis (Gauss-Newton converges only
+  // within about half a line spacing); the prior term below still pulls toward the mean.
+  Pose2 x = searchUpdateStart(prior, points, index, cfg);
   Eigen::Matrix3d gate_cov = prior.covariance;
   Eigen::Matrix3d info = prior_info;
   // Iterations run on an evenly strided subset (information is capped at max_effective_points

@@ -35,6 +35,18 @@ struct PointUpdateConfig {
   double likelihood_sigma_m = 0.05;  ///< std of the per-point likelihood used for weights, m
   double outlier_chi2 = 9.0;         ///< per-point log-likelihood floor -0.5 * this (outliers)
   double inlier_m = 0.08;            ///< a point this close to a line is an inlier, m
+  /// Start search along a wide prior (docs/tracking.md "Correction"). Gauss-Newton from the
+  /// prior mean re-associates each point with its nearest line, so it converges only to a fit
+  /// within about half a line spacing of the mean; a pose known only along a line (a global
+  /// line hypothesis, a hint) would stay where it was put when a crossing line comes into view.
+  /// When the prior's largest position std exceeds search_min_sigma_m, starts every
+  /// search_step_m along that axis within search_sigmas std (heading moved with the prior's
+  /// correlation) are scored by prior + capped point log-likelihood; the best one starts the
+  /// iterations. search_max_starts <= 1 turns the search off.
+  double search_min_sigma_m = 0.25;  ///< m; half the closest line spacing (goal area 0.5 m)
+  double search_step_m = 0.1;        ///< m; well inside the ~0.25 m basin of one start
+  double search_sigmas = 3.0;        ///< search half-width in prior std
+  int search_max_starts = 61;        ///< at most this many starts (+-3 m at 0.1 m)
 };
 
 struct PointUpdateResult {

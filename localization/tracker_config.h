@@ -45,9 +45,15 @@ struct TrackerConfig {
   double share_drop_slack = 0.1;
   double share_drop_alarm = 0.6;
   double expected_share_rate = 0.05;  ///< per judged frame, 0..1
-  double low_best_weight = 0.25;      ///< best normalised weight below this: ask
-  double lost_sigma_m = 0.5;          ///< best position std above this: LOST, ask
-  double periodic_global_s = 3.0;     ///< otherwise ask at this period, s
+  /// The best hypothesis keeping less than this share of its weight through one frame's
+  /// evidence (others explain the view clearly better) asks for global hypotheses at once, with
+  /// injected_share: the held hypotheses may all be wrong (a wrong local fit losing to a wrong
+  /// place while the true pose is not held); newcomers far from the belief get its floor, so a
+  /// false alarm costs little. 0..1.
+  double best_weight_drop_ratio = 0.5;
+  double low_best_weight = 0.25;   ///< best normalised weight below this: ask
+  double lost_sigma_m = 0.5;       ///< best position std above this: LOST, ask
+  double periodic_global_s = 3.0;  ///< otherwise ask at this period, s
   /// No points for longer than this: the estimate is dead reckoning only, status LOST; the first
   /// frame with points again asks for global hypotheses, s.
   double lost_without_points_s = 5.0;
@@ -71,6 +77,13 @@ struct TrackerConfig {
   /// off whatever sigma it claims), m and rad (std).
   double belief_spread_m = 0.5;
   double belief_spread_rad = 0.5;
+  /// The poses of a RESET_TO hint, moved by odometry but never corrected by points, stay part of
+  /// the belief for this long (belief = the larger of the set's and the hint's mixture), s. The
+  /// hint is also checked against a global run on the next frame. Why: a hint decimetres off
+  /// can be pulled onto a wrong local fit within a frame, with a covariance of millimetres; the
+  /// belief must still say where the hint put the robot, or the true pose found later starts
+  /// barely above its mirror twin.
+  double hint_prior_s = 3.0;
 };
 
 }  // namespace houghloc

@@ -159,6 +159,10 @@ TEST_F(HypothesisTrackerTest, AsksForGlobalAtLowRateAndWhenObservationsDisagree)
   int k = 0;
   for (; k < 30; ++k) {
     tracker_.update(k * 33333, Pose2(), testing::samplePoints(field_, truth, 0.0, view, k));
+    if (k == 0) {  // the hint is checked by one global run on the first frame with points
+      EXPECT_TRUE(tracker_.needsGlobalHypotheses());
+      tracker_.injectHypotheses({gaussianAt(truth, 1.0, 0.1, 0.1)});
+    }
     EXPECT_FALSE(tracker_.needsGlobalHypotheses()) << k;
   }
   for (; k < 95; ++k) {
@@ -196,6 +200,10 @@ TEST_F(HypothesisTrackerTest, SuddenDropOfInlierShareAsksForGlobalAtOnce) {
     t->applyHint(hint(HintKind::kResetTo, {gaussianAt(truth, 1.0, 0.02, 0.02)}));
     for (int k = 0; k < 30; ++k) {
       t->update(k * 33333, Pose2(), testing::samplePoints(field_, truth, 0.0, view, k));
+      if (k == 0) {  // the hint's global check
+        ASSERT_TRUE(t->needsGlobalHypotheses());
+        t->injectHypotheses({gaussianAt(truth, 1.0, 0.1, 0.1)});
+      }
       ASSERT_FALSE(t->needsGlobalHypotheses()) << k;
     }
   }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "field_models/field_distance.h"
@@ -94,6 +95,42 @@ TEST(PointUpdate, IteratedUpdateCorrectsTwentyCentimetresInOneFrame) {
   EXPECT_NEAR(angleDifference(r.posterior.mean.theta, truth.theta), 0.0, 0.003);
   EXPECT_GT(r.inlier_share, 0.95);
   EXPECT_TRUE(r.posterior.covariance.allFinite());
+}
+
+// A global line hypothesis: right line and heading, 1.2 m off along the touch line with a 1.5 m
+// std there. Gauss-Newton from the mean cannot reach the crossing lines' fit (each point is
+// associated with its nearest line); the start search along the wide axis can.
+TEST(PointUpdate, WidePriorAlongALineFindsTheCrossingLines) {
+  const FieldModel field = makeStandardField("spl");
+  const FeatureIndex index(field);
+  const Pose2 truth(-3.0, -2.5, M_PI);  // 0.5 m from the touch line, facing the own goal line
+  GroundPoints points;
+  for (double t = 0.0; t <= 1.0; t += 0.005) {
+    for (const Segment2& s : field.segments) {
+      const Eigen::Vector2d p = truth.inverse().transform(s.a + t * (s.b - s.a));
+      if (p.x() > 0.3 && p.norm() < 3.5 && std::abs(std::atan2(p.y(), p.x())) < 0.5) {
+        points.points.push_back(GroundPoint{p});
+      }
+    }
+  }
+  ASSERT_GT(points.size(), 50u);
+  GaussianPose prior;
+  prior.mean = Pose2(truth.x + 1.2, truth.y, truth.theta);
+  prior.covariance = Eigen::Vector3d(1.5 * 1.5, 0.01 * 0.01, 0.01 * 0.01).asDiagonal();
+  const PointUpdateResult searched = updateWithGroundPoints(prior, points.points, index, {});
+  EXPECT_NEAR(searched.posterior.mean.x, truth.x, 0.01);
+  EXPECT_NEAR(searched.posterior.mean.y, truth.y, 0.01);
+  EXPECT_LT(std::sqrt(searched.posterior.covariance(0, 0)), 0.05);
+  PointUpdateConfig no_search;
+  no_search.search_max_starts = 0;
+  const PointUpdateResult local = updateWithGroundPoints(prior, points.points, index, no_search);
+  EXPECT_GT(std::abs(local.posterior.mean.x - truth.x), 0.3);
+  // A prior narrower than search_min_sigma_m does not search: the same as without the search.
+  prior.covariance(0, 0) = 0.2 * 0.2;
+  const PointUpdateResult narrow = updateWithGroundPoints(prior, points.points, index, {});
+  const PointUpdateResult narrow_off =
+      updateWithGroundPoints(prior, points.points, index, no_search);
+  EXPECT_EQ(narrow.posterior.mean.x, narrow_off.posterior.mean.x);
 }
 
 class FeatureIndexExact : public ::testing::TestWithParam<const char*> {};

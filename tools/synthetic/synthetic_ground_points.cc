@@ -105,7 +105,9 @@ void addFieldEdge(const FieldModel& field, const SyntheticConfig& config,
 
 }  // namespace
 
-std::vector<std::string> viewModelNames() { return {"nao-top", "nao-bottom", "kid-wide", "adult"}; }
+std::vector<std::string> viewModelNames() {
+  return {"nao-top", "nao-bottom", "kid-wide", "adult", "wide-pinhole"};
+}
 
 ViewModel viewModel(const std::string& name) {
   const double deg = M_PI / 180.0;
@@ -113,6 +115,8 @@ ViewModel viewModel(const std::string& name) {
   if (name == "nao-bottom") return {name, 30.0 * deg, 0.15, 1.2, 0.45, 0.0017, 1.2};
   if (name == "kid-wide") return {name, 60.0 * deg, 0.3, 5.0, 0.90, 0.0016};
   if (name == "adult") return {name, 35.0 * deg, 0.6, 7.0, 1.40, 0.0011};
+  // The camera preset's 1024x576 pinhole, f = 512 px (90 deg wide), 0.50 m high, 25 deg down.
+  if (name == "wide-pinhole") return {name, 45.0 * deg, 0.45, 4.5, 0.50, 1.0 / 512.0};
   throw std::invalid_argument("unknown view model '" + name +
                               "' (known: nao-top, nao-bottom, kid-wide, adult, wide-pinhole)");
 }

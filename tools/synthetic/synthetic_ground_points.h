@@ -26,8 +26,9 @@ struct ViewModel {
 };
 
 /// nao-top (+-28 deg, 0.4-4.5 m, 0.50 m high), nao-bottom (+-30 deg, 0.15-1.2 m, 0.45 m),
-/// kid-wide (+-60 deg, 0.3-5 m, 0.90 m), adult (+-35 deg, 0.6-7 m, 1.40 m); pixel angles as the
-/// camera presets; only nao-bottom's image ends before the horizon (at 1.2 m).
+/// kid-wide (+-60 deg, 0.3-5 m, 0.90 m), adult (+-35 deg, 0.6-7 m, 1.40 m), wide-pinhole (+-45 deg,
+/// 0.45-4.5 m, 0.50 m); pixel angles as the camera presets; only nao-bottom's image ends before
+/// the horizon (at 1.2 m).
 std::vector<std::string> viewModelNames();
 /// Throws std::invalid_argument naming the unknown view.
 ViewModel viewModel(const std::string& name);
