@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "field_models/yaml_indentation.h"
+#include "field_models/yaml_precheck.h"
 #include "localization/localizer_config_io.h"
 #include "tools/node/node_log.h"
 #include "vision/vision_config_io.h"
@@ -46,8 +46,8 @@ cv::FileStorage openConfig(const std::string& path) {
   std::stringstream text;
   text << file.rdbuf();
   std::string yaml = text.str();
+  checkYamlBeforeFileStorage(yaml, path);  // FileStorage hangs on some malformed YAML
   if (yaml.rfind("%YAML", 0) != 0) yaml = "%YAML:1.0\n---\n" + yaml;  // as loadOfflineConfig
-  checkYamlIndentation(yaml, path);
   try {
     return cv::FileStorage(
         yaml, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
