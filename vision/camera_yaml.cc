@@ -61,23 +61,8 @@ std::vector<double> readNumbers(const cv::FileNode& node, const std::string& pat
   return values;
 }
 
-}  // namespace
-
-CameraIntrinsics loadCameraYaml(const std::string& path) {
-  // Checked first because OpenCV logs to stderr when it cannot open a file (libraries stay quiet).
-  if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot open camera file");
-  checkYamlBeforeFileStorage(readTextFile(path), path);  // FileStorage hangs on some malformed YAML
-  cv::FileStorage fs;
-  try {
-    if (!fs.open(path, cv::FileStorage::READ)) {
-      throw std::runtime_error(path + ": cannot open camera file");
-    }
-  } catch (const cv::Exception& e) {
-    throw std::runtime_error(path + ": cannot parse camera file: " + e.what());
-  }
-  const cv::FileNode root = fs.root();
-  // operator[] of a non-map node throws a cv::Exception without the file (tests/fuzz).
-  if (!root.isMap()) throw std::runtime_error(path + ": expected a map of keys at the top level");
+/// The keys of an opened camera.yaml (DESIGN §5.1).
+CameraIntrinsics readIntrinsics(const cv::FileNode& root, const std::string& path) {
   CameraIntrinsics in;
   in.image_width = readPositiveInt(root, path, "image_width");
   in.image_height = readPositiveInt(root, path, "image_height");
@@ -115,6 +100,28 @@ CameraIntrinsics loadCameraYaml(const std::string& path) {
     fail(path, "camera_matrix", e.what());
   }
   return in;
+}
+}  // namespace
+
+CameraIntrinsics loadCameraYaml(const std::string& path) {
+  // Checked first because OpenCV logs to stderr when it cannot open a file (libraries stay quiet).
+  if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot open camera file");
+  checkYamlBeforeFileStorage(readTextFile(path), path);  // FileStorage hangs on some malformed YAML
+  cv::FileStorage fs;
+  try {
+    if (!fs.open(path, cv::FileStorage::READ)) {
+      throw std::runtime_error(path + ": cannot open camera file");
+    }
+    const cv::FileNode root = fs.root();
+    // operator[] of a non-map node throws a cv::Exception without the file (tests/fuzz).
+    if (!root.isMap()) throw std::runtime_error(path + ": expected a map of keys at the top level");
+    return readIntrinsics(root, path);
+  } catch (const cv::Exception& e) {
+    throw std::runtime_error(path + ": cannot parse camera file: " + e.what());
+  } catch (const std::length_error& e) {
+    // A malformed key (":ols: 3") can make OpenCV 4.6 hand out a garbage string (tests/fuzz).
+    throw std::runtime_error(path + ": malformed key or value (" + e.what() + ")");
+  }
 }
 
 void saveCameraYaml(const std::string& path, const CameraIntrinsics& intrinsics) {

@@ -56,7 +56,14 @@ cv::Mat imageFromMessage(const image_t& msg) {
   if (msg.size != static_cast<std::int32_t>(msg.data.size()))
     throw MessageError("image_t size field differs from its data");
   if (msg.pixel_format == image_t::PIXEL_FORMAT_MJPEG) {
-    cv::Mat bgr = cv::imdecode(msg.data, cv::IMREAD_COLOR);
+    // OpenCV asserts (cv::Exception) on empty input and on some corrupt streams instead of
+    // returning an empty image; a message must never end the node (fuzz target node).
+    cv::Mat bgr;
+    try {
+      if (!msg.data.empty()) bgr = cv::imdecode(msg.data, cv::IMREAD_COLOR);
+    } catch (const cv::Exception&) {
+      bgr.release();
+    }
     if (bgr.empty()) throw MessageError("image_t MJPEG data does not decode");
     return bgr;
   }

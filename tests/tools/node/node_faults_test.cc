@@ -19,7 +19,8 @@ class NodeFaultsTest : public NodeFixture {
                                         const Pose2* odometry_value = nullptr) {
     const FrameRecord& f = frame(i);
     if (odometry)
-      core.onOdometry(odometryToMessage(utime, odometry_value ? *odometry_value : f.odometry));
+      core.onOdometry(
+          odometryToMessage(utime, odometry_value ? *odometry_value : f.odometry.value()));
     if (camera_pose) core.onCameraPose(cameraPoseToMessage(utime, f.camera_id, f.robot_T_camera));
     const std::optional<NodeOutput> out = core.onImage(image(i, utime));
     if (!out) return std::nullopt;
@@ -33,7 +34,7 @@ TEST_F(NodeFaultsTest, PublisherRestartedMidRunKeepsTracking) {
   const std::size_t restart = frames() / 2;
   // The restarted publisher's clock and cumulative odometry both start again from zero.
   const std::int64_t back = frame(restart).t_us - 1'000'000;
-  const Pose2 odometry_origin = frame(restart).odometry;
+  const Pose2 odometry_origin = frame(restart).odometry.value();
   std::map<std::size_t, pose_hypotheses_t> before, after;
   for (std::size_t i = 0; i < frames(); ++i) {
     if (i < restart) {
@@ -41,7 +42,7 @@ TEST_F(NodeFaultsTest, PublisherRestartedMidRunKeepsTracking) {
       ASSERT_TRUE(h) << "frame " << i << ": " << core->status().message;
       before[i] = *h;
     } else {
-      const Pose2 odometry = odometry_origin.inverse() * frame(i).odometry;
+      const Pose2 odometry = odometry_origin.inverse() * frame(i).odometry.value();
       const auto h = feed(*core, i, frame(i).t_us - back, true, true, &odometry);
       ASSERT_TRUE(h) << "frame " << i << ": " << core->status().message;
       after[i] = *h;
@@ -128,8 +129,8 @@ TEST_F(NodeFaultsTest, StaticCameraPoseStandsInForCameraPoseMessages) {
   const std::size_t n = 90;
   for (std::size_t i = 0; i < n; ++i) {
     const FrameRecord& f = frame(i);
-    with_static->onOdometry(odometryToMessage(f.t_us, f.odometry));
-    with_messages->onOdometry(odometryToMessage(f.t_us, f.odometry));
+    with_static->onOdometry(odometryToMessage(f.t_us, f.odometry.value()));
+    with_messages->onOdometry(odometryToMessage(f.t_us, f.odometry.value()));
     with_messages->onCameraPose(cameraPoseToMessage(f.t_us, f.camera_id, fixed));
     const image_t msg = image(i, f.t_us);
     const auto a = with_static->onImage(msg), b = with_messages->onImage(msg);
@@ -156,7 +157,7 @@ TEST_F(NodeFaultsTest, CameraStreamsMoreThanOneSecondApartAreReported) {
   const std::string top = frame(0).camera_id;
   for (std::size_t i = 0; i < 45; ++i) {
     const FrameRecord& f = frame(i);
-    core.onOdometry(odometryToMessage(f.t_us, f.odometry));
+    core.onOdometry(odometryToMessage(f.t_us, f.odometry.value()));
     for (const std::string& id : {top, std::string("bottom")}) {
       if (id == "bottom" && i > 0) continue;
       core.onCameraPose(cameraPoseToMessage(f.t_us, id, f.robot_T_camera));

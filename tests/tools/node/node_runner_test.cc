@@ -78,7 +78,7 @@ class NodeRunnerTest : public NodeFixture {
   /// its HYPOTHESES (as houghloc-play --fast does).
   std::optional<pose_hypotheses_t> play(RunningNode& node, std::size_t i) {
     const FrameRecord& f = frame(i);
-    node.publish("ODOMETRY", odometryToMessage(f.t_us, f.odometry));
+    node.publish("ODOMETRY", odometryToMessage(f.t_us, f.odometry.value()));
     node.publish("CAMERA_POSE", cameraPoseToMessage(f.t_us, f.camera_id, f.robot_T_camera));
     node.publish("IMAGE", image(i, f.t_us));
     return node.waitHypotheses(f.t_us);
@@ -94,7 +94,7 @@ TEST_F(NodeRunnerTest, GivesNodeCoresHypothesesOverMemq) {
     ASSERT_TRUE(h) << "no HYPOTHESES for frame " << i;
     results[i] = *h;
     const FrameRecord& f = frame(i);
-    reference->onOdometry(odometryToMessage(f.t_us, f.odometry));
+    reference->onOdometry(odometryToMessage(f.t_us, f.odometry.value()));
     reference->onCameraPose(cameraPoseToMessage(f.t_us, f.camera_id, f.robot_T_camera));
     const std::optional<NodeOutput> direct = reference->onImage(image(i, f.t_us));
     ASSERT_TRUE(direct);
@@ -233,7 +233,7 @@ TEST_F(NodeRunnerTest, RestartWithSavePoseContinuesTracking) {
   EXPECT_EQ(first, restart);
   // Without the saved pose the same first image leaves the node without one pose.
   auto fresh = makeCore();
-  fresh->onOdometry(odometryToMessage(frame(restart).t_us, frame(restart).odometry));
+  fresh->onOdometry(odometryToMessage(frame(restart).t_us, frame(restart).odometry.value()));
   fresh->onCameraPose(cameraPoseToMessage(frame(restart).t_us, frame(restart).camera_id,
                                           frame(restart).robot_T_camera));
   const auto alone = fresh->onImage(image(restart, frame(restart).t_us));

@@ -84,7 +84,7 @@ class OfflineLcmLog : public ::testing::Test {
     ASSERT_TRUE(log.good());
     for (std::size_t i = 0; i < rec_.frames.size(); ++i) {
       const FrameRecord& f = rec_.frames[i];
-      const odometry_t odometry = odometryToMessage(f.t_us, f.odometry);
+      const odometry_t odometry = odometryToMessage(f.t_us, f.odometry.value());
       const camera_pose_t pose = cameraPoseToMessage(f.t_us, f.camera_id, f.robot_T_camera);
       core.onOdometry(odometry);
       core.onCameraPose(pose);
