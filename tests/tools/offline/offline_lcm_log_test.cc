@@ -12,6 +12,7 @@
 #include <lcm/lcm-cpp.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "tests/tools/offline/offline_cli_fixture.h"
 #include "tools/lcm/lcm_log_reader.h"
 #include "tools/lcm/message_conversion.h"
 #include "tools/node/node_core.h"
@@ -24,22 +25,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kPrefix = "NAO3_";
-
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  ///< stdout and stderr
-};
-
-RunResult runOffline(const std::string& args) {
-  const std::string command = std::string(HOUGHLOC_OFFLINE_EXE) + " " + args + " 2>&1";
-  RunResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
 
 class LogWriter {
  public:
@@ -135,8 +120,8 @@ TEST_F(OfflineLcmLog, ReproducesTheLoggedPoses) {
   const std::size_t frames = rec_.frames.size();
   ASSERT_EQ(logged_.size(), frames - frames / 5 - (frames % 5 > 3 ? 1 : 0));
 
-  const RunResult r = runOffline("--lcm-log " + log + " --standard spl" + camera_args_ +
-                                 " --channel-prefix " + kPrefix + " -o " + out.string());
+  const RunResult r = run("--lcm-log " + log + " --standard spl" + camera_args_ +
+                          " --channel-prefix " + kPrefix + " -o " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::vector<FrameEstimate> written = readFrameEstimates(out.string());
   ASSERT_EQ(written.size(), logged_.size()) << r.output;
@@ -172,13 +157,13 @@ TEST_F(OfflineLcmLog, ReproducesTheLoggedPoses) {
 
 TEST_F(OfflineLcmLog, NamesAFileThatIsNotAnLcmLog) {
   const std::string yaml = rec_.folder + "/cameras/nao-top.yaml";
-  const RunResult r = runOffline("--lcm-log " + yaml + " --standard spl" + camera_args_ + " -o " +
-                                 (work_ / "not_a_log").string());
+  const RunResult r = run("--lcm-log " + yaml + " --standard spl" + camera_args_ + " -o " +
+                          (work_ / "not_a_log").string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find(yaml + ": not an LCM log"), std::string::npos) << r.output;
 
-  const RunResult missing = runOffline("--lcm-log " + (work_ / "missing.log").string() +
-                                       " --standard spl" + camera_args_);
+  const RunResult missing =
+      run("--lcm-log " + (work_ / "missing.log").string() + " --standard spl" + camera_args_);
   EXPECT_NE(missing.exit_code, 0);
   EXPECT_NE(missing.output.find("missing.log: no such file"), std::string::npos) << missing.output;
 }
