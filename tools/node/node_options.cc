@@ -6,9 +6,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "field_models/yaml_precheck.h"
 #include "localization/localizer_config_io.h"
 #include "tools/node/node_log.h"
+#include "tools/offline/offline_config.h"
 #include "vision/vision_config_io.h"
 
 namespace houghloc {
@@ -38,22 +38,6 @@ std::string flagOf(const std::string& key) {
   for (char& c : flag)
     if (c == '_') c = '-';
   return flag;
-}
-
-cv::FileStorage openConfig(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw std::runtime_error(path + ": cannot read the config file");
-  std::stringstream text;
-  text << file.rdbuf();
-  std::string yaml = text.str();
-  checkYamlBeforeFileStorage(yaml, path);  // FileStorage hangs on some malformed YAML
-  if (yaml.rfind("%YAML", 0) != 0) yaml = "%YAML:1.0\n---\n" + yaml;  // as loadOfflineConfig
-  try {
-    return cv::FileStorage(
-        yaml, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
-  } catch (const cv::Exception& e) {
-    throw std::runtime_error(path + ": not a valid YAML config: " + e.err);
-  }
 }
 
 std::string readText(const cv::FileNode& node, const std::string& where) {
@@ -152,7 +136,7 @@ void addNodeOptions(CLI::App& app, NodeOptions* o) {
 
 void applyNodeConfig(const CLI::App& app, NodeOptions* o) {
   if (!o->config.empty()) {
-    const cv::FileStorage storage = openConfig(o->config);
+    const cv::FileStorage storage = openConfigFile(o->config);
     const cv::FileNode section = storage["node"];
     const std::string where = o->config + ": node";
     if (!section.empty() && !section.isNone() && !section.isMap())

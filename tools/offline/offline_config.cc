@@ -12,13 +12,12 @@
 
 namespace houghloc {
 
-OfflineConfig loadOfflineConfig(const std::string& path) {
-  OfflineConfig config;
-  if (path.empty()) return config;
+cv::FileStorage openConfigFile(const std::string& path) {
   if (!std::filesystem::exists(path)) {
     throw std::runtime_error(path + ": config file does not exist");
   }
   std::ifstream file(path);
+  if (!file) throw std::runtime_error(path + ": cannot read the config file");
   std::stringstream text;
   text << file.rdbuf();
   std::string yaml = text.str();
@@ -34,7 +33,14 @@ OfflineConfig loadOfflineConfig(const std::string& path) {
     throw std::runtime_error(path + ": not a valid YAML config: " + e.err);
   }
   if (!storage.isOpened()) throw std::runtime_error(path + ": cannot be read as YAML");
-  // Other sections (a node's `lcm:`, say) belong to other tools and are left alone.
+  return storage;
+}
+
+OfflineConfig loadOfflineConfig(const std::string& path) {
+  OfflineConfig config;
+  if (path.empty()) return config;
+  const cv::FileStorage storage = openConfigFile(path);
+  // Other sections (a node's `node:`, say) belong to other tools and are left alone.
   const cv::FileNode root = storage.root();
   config.vision = readVisionConfig(root["vision"], path);
   config.localizer = readLocalizerConfig(root, path);
