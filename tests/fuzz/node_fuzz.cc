@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "field_models/standard_fields.h"
+#include "tests/fuzz/fuzz_camera.h"
 #include "tests/fuzz/fuzz_support.h"
 #include "tools/lcm/message_decoding.h"
 #include "tools/node/node_core.h"
@@ -20,22 +21,10 @@ namespace {
 
 using namespace houghloc;
 
-// A small camera (64x48, the nao-top preset scaled), so that images cost little to fuzz.
+// The camera's size (the nao-top preset scaled), so that images cost little to fuzz.
 constexpr int kWidth = 64;
 constexpr int kHeight = 48;
 const std::vector<std::string> kCameraIds = {"", "top", "unknown"};
-
-CameraIntrinsics smallCamera() {
-  CameraIntrinsics intrinsics = cameraPreset("nao-top").intrinsics;
-  const double scale = static_cast<double>(kWidth) / intrinsics.image_width;
-  intrinsics.camera_matrix(0, 0) *= scale;
-  intrinsics.camera_matrix(1, 1) *= scale;
-  intrinsics.camera_matrix(0, 2) = 0.5 * kWidth;
-  intrinsics.camera_matrix(1, 2) = 0.5 * kHeight;
-  intrinsics.image_width = kWidth;
-  intrinsics.image_height = kHeight;
-  return intrinsics;
-}
 
 std::string cameraId(fuzz::ByteReader& in) { return kCameraIds[in.byte() % kCameraIds.size()]; }
 
@@ -148,7 +137,9 @@ NodeCore* node_under_test = nullptr;
 // to input (a finding reproduces by replaying the corpus in order, as fuzz_replay_node does).
 extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** /*argv*/) {
   static NodeCore node(std::make_shared<const FieldModel>(makeStandardField("spl")),
-                       PipelineConfig{}, {{"", smallCamera()}, {"top", smallCamera()}});
+                       PipelineConfig{},
+                       {{"", fuzz::scaledCamera("nao-top", kWidth, kHeight)},
+                        {"top", fuzz::scaledCamera("nao-top", kWidth, kHeight)}});
   node_under_test = &node;
   return 0;
 }

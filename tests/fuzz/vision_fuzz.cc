@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include "field_models/standard_fields.h"
+#include "tests/fuzz/fuzz_camera.h"
 #include "tests/fuzz/fuzz_support.h"
 #include "vision/camera_presets.h"
 #include "vision/vision_pipeline.h"
@@ -22,14 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   pose.pitch += in.smallDouble(1.0);
   const std::string pixels = in.rest();
 
-  CameraIntrinsics intrinsics = cameraPreset("nao-top").intrinsics;
-  const double scale = static_cast<double>(width) / intrinsics.image_width;
-  intrinsics.camera_matrix(0, 0) *= scale;
-  intrinsics.camera_matrix(1, 1) *= scale;
-  intrinsics.camera_matrix(0, 2) = 0.5 * width;
-  intrinsics.camera_matrix(1, 2) = 0.5 * height;
-  intrinsics.image_width = width;
-  intrinsics.image_height = height;
+  const CameraIntrinsics intrinsics = fuzz::scaledCamera("nao-top", width, height);
   static const auto field = std::make_shared<const FieldModel>(makeStandardField("spl"));
 
   cv::Mat image(height, width, yuyv ? CV_8UC2 : CV_8UC3);
