@@ -21,17 +21,12 @@ const std::set<std::string> kKnownKeys = {
     "name",     "field_length", "field_width", "line_width", "border_strip_width",
     "segments", "arcs",         "marks",       "goals"};
 
-[[noreturn]] void fail(const std::string& source, const std::string& entry,
-                       const std::string& what) {
-  throw FormatError(source + ": " + entry + ": " + what);
-}
-
 bool isNumber(const cv::FileNode& node) { return node.isInt() || node.isReal(); }
 
 double readScalar(const cv::FileNode& root, const std::string& source, const std::string& key) {
   const cv::FileNode node = root[key];
-  if (node.empty() || node.isNone()) fail(source, key, "missing");
-  if (!isNumber(node)) fail(source, key, "expected a number");
+  if (node.empty() || node.isNone()) throwFormatError(source, key, "missing");
+  if (!isNumber(node)) throwFormatError(source, key, "expected a number");
   return node.real();
 }
 
@@ -39,14 +34,15 @@ double readScalar(const cv::FileNode& root, const std::string& source, const std
 std::vector<double> readRow(const cv::FileNode& node, const std::string& source,
                             const std::string& entry, std::size_t count) {
   const std::string expected = "expected " + std::to_string(count) + " numbers";
-  if (!node.isSeq()) fail(source, entry, expected + " in [ ]");
+  if (!node.isSeq()) throwFormatError(source, entry, expected + " in [ ]");
   if (node.size() != count) {
-    fail(source, entry, expected + ", got " + std::to_string(node.size()));
+    throwFormatError(source, entry, expected + ", got " + std::to_string(node.size()));
   }
   std::vector<double> row;
   for (std::size_t i = 0; i < count; ++i) {
     const cv::FileNode value = node[static_cast<int>(i)];
-    if (!isNumber(value)) fail(source, entry, expected + "; item " + std::to_string(i) + " is not");
+    if (!isNumber(value))
+      throwFormatError(source, entry, expected + "; item " + std::to_string(i) + " is not");
     row.push_back(value.real());
   }
   return row;
@@ -58,10 +54,10 @@ void readList(const cv::FileNode& root, const std::string& source, const std::st
               std::size_t count, bool required, AddRow add) {
   const cv::FileNode list = root[key];
   if (list.empty() || list.isNone()) {
-    if (required) fail(source, key, "missing");
+    if (required) throwFormatError(source, key, "missing");
     return;
   }
-  if (!list.isSeq()) fail(source, key, "expected a list");
+  if (!list.isSeq()) throwFormatError(source, key, "expected a list");
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string entry = key + "[" + std::to_string(i) + "]";
     add(readRow(list[static_cast<int>(i)], source, entry, count), entry);
@@ -71,7 +67,7 @@ void readList(const cv::FileNode& root, const std::string& source, const std::st
 MarkShape readShape(double value, const std::string& source, const std::string& entry) {
   if (value == 0.0) return MarkShape::kCross;
   if (value == 1.0) return MarkShape::kDot;
-  fail(source, entry, "shape must be 0 (cross) or 1 (dot)");
+  throwFormatError(source, entry, "shape must be 0 (cross) or 1 (dot)");
 }
 
 /// Turns FileStorage's parse exception into "source: line N: reason". OpenCV 4.6 puts
@@ -98,14 +94,14 @@ FieldModel parseRoot(const cv::FileNode& root, const std::string& source) {
   }
   std::set<std::string> seen;
   for (const std::string& key : root.keys()) {
-    if (!kKnownKeys.count(key)) fail(source, key, "unknown key");
+    if (!kKnownKeys.count(key)) throwFormatError(source, key, "unknown key");
     // FileStorage would silently use the first of two equal keys.
-    if (!seen.insert(key).second) fail(source, key, "duplicate key");
+    if (!seen.insert(key).second) throwFormatError(source, key, "duplicate key");
   }
   FieldModel field;
   const cv::FileNode name = root["name"];
   if (!name.empty() && !name.isNone()) {
-    if (!name.isString()) fail(source, "name", "expected a string");
+    if (!name.isString()) throwFormatError(source, "name", "expected a string");
     field.name = name.string();
   }
   field.field_length = readScalar(root, source, "field_length");

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <string>
 
 namespace houghloc {
 
@@ -10,5 +11,11 @@ class FormatError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// Throws FormatError("<source>: <entry>: <what>").
+[[noreturn]] inline void throwFormatError(const std::string& source, const std::string& entry,
+                                          const std::string& what) {
+  throw FormatError(source + ": " + entry + ": " + what);
+}
 
 }  // namespace houghloc

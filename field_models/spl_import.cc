@@ -60,10 +60,6 @@ const std::map<std::string, std::string> kOutdatedNames = {
     {"goalDepth", "depth"},
 };
 
-[[noreturn]] void fail(const std::string& source, const std::string& key, const std::string& what) {
-  throw FormatError(source + ": " + key + ": " + what);
-}
-
 std::string typeName(const Json& value) {
   return value.is_boolean()  ? "a bool"
          : value.is_null()   ? "null"
@@ -115,7 +111,7 @@ Json parseStrict(const std::string& text, const std::string& source) {
         if (!keys_per_object.empty() && !keys_per_object.back().insert(last_key).second) {
           std::string prefix;
           for (const std::string& p : path) prefix += p.empty() ? "" : p + ".";
-          fail(source, prefix + last_key, "duplicate key");
+          throwFormatError(source, prefix + last_key, "duplicate key");
         }
         break;
       }
@@ -145,34 +141,37 @@ Json parseStrict(const std::string& text, const std::string& source) {
 void readSection(const Json& root, const std::string& source, const std::string& section,
                  const std::vector<KeyRule>& rules, FieldDimensions& dims) {
   const Json& object = root.at(section);
-  if (!object.is_object()) fail(source, section, "expected an object, got " + typeName(object));
+  if (!object.is_object())
+    throwFormatError(source, section, "expected an object, got " + typeName(object));
   for (const auto& item : object.items()) {
     const std::string key = section + "." + item.key();
     const auto outdated = kOutdatedNames.find(item.key());
     if (outdated != kOutdatedNames.end()) {
-      fail(source, key, "outdated name, use " + section + "." + outdated->second);
+      throwFormatError(source, key, "outdated name, use " + section + "." + outdated->second);
     }
     bool known = false;
     for (const KeyRule& rule : rules) known = known || item.key() == rule.key;
-    if (!known) fail(source, key, "unknown key");
+    if (!known) throwFormatError(source, key, "unknown key");
   }
   for (const KeyRule& rule : rules) {
     const std::string key = section + "." + rule.key;
     if (!object.contains(rule.key)) {
       if (rule.optional) continue;
-      fail(source, key, "missing");
+      throwFormatError(source, key, "missing");
     }
     const Json& value = object.at(rule.key);
-    if (!value.is_number()) fail(source, key, "expected a number, got " + typeName(value));
+    if (!value.is_number())
+      throwFormatError(source, key, "expected a number, got " + typeName(value));
     const double v = value.get<double>();
-    if (v == 0.0) fail(source, key, "must not be zero");
+    if (v == 0.0) throwFormatError(source, key, "must not be zero");
     if (rule.min_m == rule.max_m && v != rule.min_m) {
-      fail(source, key, "must be exactly " + shortest(rule.min_m) + ", got " + shortest(v));
+      throwFormatError(source, key,
+                       "must be exactly " + shortest(rule.min_m) + ", got " + shortest(v));
     }
     if (v < rule.min_m || v > rule.max_m) {
-      fail(source, key,
-           shortest(v) + " is out of range [" + shortest(rule.min_m) + ", " + shortest(rule.max_m) +
-               "]");
+      throwFormatError(source, key,
+                       shortest(v) + " is out of range [" + shortest(rule.min_m) + ", " +
+                           shortest(rule.max_m) + "]");
     }
     dims.*rule.member = v;
   }
@@ -188,10 +187,11 @@ FieldDimensions parseSplFieldDimensions(const std::string& json_text,
                       ": expected {\"field\": {...}, \"goal\": {...}} at the top level");
   }
   for (const auto& item : root.items()) {
-    if (item.key() != "field" && item.key() != "goal") fail(source_name, item.key(), "unknown key");
+    if (item.key() != "field" && item.key() != "goal")
+      throwFormatError(source_name, item.key(), "unknown key");
   }
   for (const char* section : {"field", "goal"}) {
-    if (!root.contains(section)) fail(source_name, section, "missing");
+    if (!root.contains(section)) throwFormatError(source_name, section, "missing");
   }
 
   FieldDimensions dims;  // SPL defaults for what the JSON does not describe (mark shape, ...)
@@ -203,9 +203,10 @@ FieldDimensions parseSplFieldDimensions(const std::string& json_text,
   const bool has_length = field.contains("goalAreaLength");
   const bool has_width = field.contains("goalAreaWidth");
   if (has_length != has_width) {
-    fail(source_name, has_length ? "field.goalAreaWidth" : "field.goalAreaLength",
-         std::string("missing: goalAreaLength and goalAreaWidth come both or neither (") +
-             (has_length ? "goalAreaLength" : "goalAreaWidth") + " is given)");
+    throwFormatError(
+        source_name, has_length ? "field.goalAreaWidth" : "field.goalAreaLength",
+        std::string("missing: goalAreaLength and goalAreaWidth come both or neither (") +
+            (has_length ? "goalAreaLength" : "goalAreaWidth") + " is given)");
   }
   if (!has_length) {  // 2019 style: no goal areas
     dims.goal_area_length = 0.0;

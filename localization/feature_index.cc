@@ -130,7 +130,9 @@ FeatureIndex::FeatureIndex(const FieldModel& field, const FeatureIndexConfig& co
   inv_resolution_ = 1.0 / config.resolution_m;
   cols_ = std::max(1, static_cast<int>(std::ceil(2.0 * hx * inv_resolution_)));
   rows_ = std::max(1, static_cast<int>(std::ceil(2.0 * hy * inv_resolution_)));
-  cells_.assign(static_cast<size_t>(cols_) * rows_, Candidates{-1, -1, -1, -1});
+  const size_t cells = static_cast<size_t>(cols_) * rows_;
+  cell_begin_.assign(1, 0);
+  cell_begin_.reserve(cells + 1);
   // A primitive nearest to some point of a cell is within d_min(centre) + 2 * half diagonal of
   // the centre (triangle inequality twice).
   const double reach = std::sqrt(2.0) * config.resolution_m;
@@ -142,26 +144,25 @@ FeatureIndex::FeatureIndex(const FieldModel& field, const FeatureIndexConfig& co
       for (size_t k = 0; k < primitives_.size(); ++k) {
         dist[k] = {associateWith(primitives_[k], centre).distance_m, static_cast<int>(k)};
       }
-      const size_t keep = std::min<size_t>(kMaxCandidates, dist.size());
-      std::partial_sort(dist.begin(), dist.begin() + keep, dist.end());
-      Candidates& cell = cells_[static_cast<size_t>(r) * cols_ + c];
-      for (int k = 0; k < kMaxCandidates && k < static_cast<int>(dist.size()); ++k) {
-        if (k > 0 && dist[k].first > dist[0].first + reach) break;
-        cell[k] = static_cast<std::int16_t>(dist[k].second);
+      std::sort(dist.begin(), dist.end());
+      for (const auto& [d, k] : dist) {
+        if (d > dist.front().first + reach) break;
+        candidates_.push_back(static_cast<std::int16_t>(k));
       }
+      cell_begin_.push_back(static_cast<std::uint32_t>(candidates_.size()));
     }
   }
 }
 
 bool FeatureIndex::associate(const Eigen::Vector2d& p_field, Association* out) const {
-  if (cells_.empty() || !p_field.allFinite()) return false;
+  if (candidates_.empty() || !p_field.allFinite()) return false;
   const double gx = (p_field.x() - origin_.x()) * inv_resolution_;
   const double gy = (p_field.y() - origin_.y()) * inv_resolution_;
   if (!(gx >= 0.0 && gy >= 0.0 && gx < cols_ && gy < rows_)) return false;
-  const Candidates& cell = cells_[static_cast<size_t>(gy) * cols_ + static_cast<size_t>(gx)];
+  const size_t cell = static_cast<size_t>(gy) * cols_ + static_cast<size_t>(gx);
   bool found = false;
-  for (std::int16_t k : cell) {
-    if (k < 0) break;
+  for (std::uint32_t i = cell_begin_[cell]; i < cell_begin_[cell + 1]; ++i) {
+    const std::int16_t k = candidates_[i];
     const Association a = associateWith(primitives_[k], p_field);
     if (!found || a.distance_m < out->distance_m) {
       *out = a;

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -42,11 +41,11 @@ Association associateWith(const LinePrimitive& primitive, const Eigen::Vector2d&
 
 /// The nearest line feature in O(1): each grid cell stores every primitive that can be nearest to
 /// some point of the cell (those within the cell centre's nearest distance plus one cell
-/// diagonal), so association evaluates a few candidates exactly instead of the whole map.
+/// diagonal), so association evaluates a few candidates exactly instead of the whole map. The
+/// lists have no length cap, so the answer is exact (and the same on every compiler) also where
+/// many features meet, e.g. at a penalty cross near a line.
 class FeatureIndex {
  public:
-  static constexpr int kMaxCandidates = 4;
-
   FeatureIndex() = default;
   explicit FeatureIndex(const FieldModel& field, const FeatureIndexConfig& config = {});
 
@@ -57,14 +56,14 @@ class FeatureIndex {
   bool empty() const { return primitives_.empty(); }
 
  private:
-  using Candidates = std::array<std::int16_t, kMaxCandidates>;  // -1 terminated
-
   FeatureIndexConfig config_;
   std::vector<LinePrimitive> primitives_;
   Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();  ///< field position of cell (0, 0)'s corner
   double inv_resolution_ = 0.0;
   int cols_ = 0, rows_ = 0;
-  std::vector<Candidates> cells_;
+  /// Candidates of cell i: candidates_[cell_begin_[i] .. cell_begin_[i + 1]), nearest first.
+  std::vector<std::uint32_t> cell_begin_;
+  std::vector<std::int16_t> candidates_;
 };
 
 }  // namespace houghloc

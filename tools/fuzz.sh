@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of tests/fuzz (the `fuzz` preset: clang-14, ASan + UBSan, in
-# build-fuzz/) and runs them, each for SECONDS (default 30), on a copy of its seed corpus
-# tests/fuzz/corpus/<target>/ (new inputs go to build-fuzz/corpus/<target>/, crashes to
-# build-fuzz/crashes/<target>/). Exits non-zero when a target finds a crash, leak or timeout:
+# Builds the libFuzzer targets of tests/fuzz (the `asan` preset: clang-14, ASan + UBSan, in
+# build-asan/, the tree the sanitizer tests use) and runs them, each for SECONDS (default 30), on
+# a copy of its seed corpus tests/fuzz/corpus/<target>/ (new inputs go to
+# build-asan/corpus/<target>/, crashes to build-asan/crashes/<target>/). Exits non-zero when a target finds a crash, leak or timeout:
 # copy the input into tests/fuzz/corpus/<target>/ so fuzz_replay_<target> keeps it as a test.
 # HOUGHLOC_FUZZ_SEED fixes libFuzzer's random seed (.ci/run sets it, so that a CI run explores
 # the same inputs on every run instead of failing at random on an input nobody has seen).
@@ -12,14 +12,14 @@ cd "$(dirname "$0")/.."
 TARGETS=(field_yaml spl_json camera_yaml recording_csv scenario_yaml vision localizer node)
 WHICH=${1:-all}
 SECONDS_PER_TARGET=${2:-30}
-BUILD_DIR=${HOUGHLOC_FUZZ_BUILD_DIR:-build-fuzz}
+BUILD_DIR=build-asan
 if [[ $WHICH != all ]]; then TARGETS=("$WHICH"); fi
 
 if ! command -v clang++-14 >/dev/null; then
   echo "fuzz: clang++-14 missing (tools/setup.sh installs clang-14 and libfuzzer-14-dev)" >&2
   exit 1
 fi
-cmake --preset fuzz -DHOUGHLOC_BUILD_TESTS=ON >/dev/null
+cmake --preset asan >/dev/null
 names=()
 for t in "${TARGETS[@]}"; do names+=("${t}_fuzz"); done
 LOG="$BUILD_DIR/fuzz-build.log"

@@ -7,10 +7,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "field_models/angles.h"
+
 namespace houghloc {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 

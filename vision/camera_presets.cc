@@ -2,10 +2,10 @@
 
 #include <stdexcept>
 
+#include "field_models/angles.h"
+
 namespace houghloc {
 namespace {
-
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 CameraIntrinsics makeIntrinsics(int width, int height, double f, std::vector<double> distortion,
                                 DistortionModel model) {

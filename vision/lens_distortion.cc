@@ -6,10 +6,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "field_models/angles.h"
+
 namespace houghloc {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Beyond 89 deg off-axis a pinhole image is meaningless; OpenCV's fisheye model divides by z.
 constexpr double kMaxPinholeTheta = 89.0 * kPi / 180.0;
 constexpr double kMaxFisheyeTheta = 89.5 * kPi / 180.0;

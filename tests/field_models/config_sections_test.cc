@@ -46,7 +46,7 @@ std::string writeYaml(Outer o) {
   return storage.releaseAndGetString();
 }
 
-std::string errorOf(const std::string& body) {
+std::string sectionErrorOf(const std::string& body) {
   try {
     readYaml(body);
   } catch (const std::runtime_error& e) {
@@ -89,16 +89,17 @@ TEST(ConfigSections, RoundTripsEveryMember) {
 }
 
 TEST(ConfigSections, ErrorsNameSourceAndKey) {
-  EXPECT_EQ(errorOf("outer:\n  inner:\n    colour: 1\n"),
+  EXPECT_EQ(sectionErrorOf("outer:\n  inner:\n    colour: 1\n"),
             "test.yaml: outer.inner.colour: unknown key");
-  EXPECT_EQ(errorOf("outer:\n  count: many\n"), "test.yaml: outer.count: expected a number");
-  EXPECT_EQ(errorOf("outer:\n  count: 2.5\n"), "test.yaml: outer.count: expected an integer");
-  EXPECT_EQ(errorOf("outer:\n  limit: -1\n"), "test.yaml: outer.limit: out of range");
-  EXPECT_EQ(errorOf("outer:\n  enabled: 2\n"), "test.yaml: outer.enabled: expected 0 or 1");
-  EXPECT_EQ(errorOf("outer:\n  inner:\n    mode: slow\n"),
+  EXPECT_EQ(sectionErrorOf("outer:\n  count: many\n"), "test.yaml: outer.count: expected a number");
+  EXPECT_EQ(sectionErrorOf("outer:\n  count: 2.5\n"),
+            "test.yaml: outer.count: expected an integer");
+  EXPECT_EQ(sectionErrorOf("outer:\n  limit: -1\n"), "test.yaml: outer.limit: out of range");
+  EXPECT_EQ(sectionErrorOf("outer:\n  enabled: 2\n"), "test.yaml: outer.enabled: expected 0 or 1");
+  EXPECT_EQ(sectionErrorOf("outer:\n  inner:\n    mode: slow\n"),
             "test.yaml: outer.inner.mode: expected one of fast, exact");
-  EXPECT_EQ(errorOf("outer:\n  inner: 3\n"), "test.yaml: outer.inner: expected a map");
-  EXPECT_EQ(errorOf("outer: [1, 2]\n"), "test.yaml: outer: expected a map");
+  EXPECT_EQ(sectionErrorOf("outer:\n  inner: 3\n"), "test.yaml: outer.inner: expected a map");
+  EXPECT_EQ(sectionErrorOf("outer: [1, 2]\n"), "test.yaml: outer: expected a map");
 }
 
 }  // namespace

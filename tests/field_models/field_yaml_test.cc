@@ -45,7 +45,7 @@ void expectSameField(const FieldModel& a, const FieldModel& b) {
   }
 }
 
-std::string errorOf(const std::string& yaml) {
+std::string yamlErrorOf(const std::string& yaml) {
   try {
     parseFieldYaml(yaml, "field.yaml");
   } catch (const FormatError& e) {
@@ -136,7 +136,7 @@ void PrintTo(const BadYaml& c, std::ostream* os) { *os << c.label; }
 class BadYamlTest : public ::testing::TestWithParam<BadYaml> {};
 
 TEST_P(BadYamlTest, ErrorNamesFileAndEntry) {
-  const std::string message = errorOf(GetParam().text);
+  const std::string message = yamlErrorOf(GetParam().text);
   EXPECT_NE(message.find(GetParam().expected), std::string::npos) << message;
   EXPECT_EQ(message.rfind("field.yaml: ", 0), 0u) << message;
 }
@@ -174,7 +174,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(FieldYamlTest, SyntaxErrorLineCountsTheUsersLines) {
   // Without a header the reader prepends one; the reported line must still be the user's.
-  const std::string message = errorOf("field_length: 9\nfield_width: 6\n  line_width: 0.05\n");
+  const std::string message = yamlErrorOf("field_length: 9\nfield_width: 6\n  line_width: 0.05\n");
   EXPECT_NE(message.find("field.yaml: line 3:"), std::string::npos) << message;
 }
 

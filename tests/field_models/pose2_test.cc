@@ -7,14 +7,14 @@
 namespace houghloc {
 namespace {
 
-constexpr double kTol = 1e-12;
+constexpr double kPoseTol = 1e-12;
 
 Pose2 randomPose(std::mt19937& rng) {
   std::uniform_real_distribution<double> xy(-10.0, 10.0), angle(-M_PI, M_PI);
   return Pose2(xy(rng), xy(rng), angle(rng));
 }
 
-void expectNear(const Pose2& a, const Pose2& b, double tol = kTol) {
+void expectNear(const Pose2& a, const Pose2& b, double tol = kPoseTol) {
   EXPECT_NEAR(a.x, b.x, tol);
   EXPECT_NEAR(a.y, b.y, tol);
   EXPECT_NEAR(angleDifference(a.theta, b.theta), 0.0, tol);
@@ -26,8 +26,8 @@ TEST(Pose2Test, ComposesByHand) {
   const Pose2 robot_T_ahead(1.0, 0.0, 0.0);
   expectNear(field_T_robot * robot_T_ahead, Pose2(1.0, 3.0, M_PI / 2));
   const Eigen::Vector2d p = field_T_robot.transform({0.0, 1.0});  // 1 m to the robot's left
-  EXPECT_NEAR(p.x(), 0.0, kTol);
-  EXPECT_NEAR(p.y(), 2.0, kTol);
+  EXPECT_NEAR(p.x(), 0.0, kPoseTol);
+  EXPECT_NEAR(p.y(), 2.0, kPoseTol);
 }
 
 TEST(Pose2Test, InverseAndCompositionIdentities) {
@@ -51,12 +51,12 @@ TEST(Pose2Test, InverseAndCompositionIdentities) {
 TEST(Pose2Test, NormalizeAngleWrapsToHalfOpenInterval) {
   EXPECT_DOUBLE_EQ(normalizeAngle(M_PI), M_PI);
   EXPECT_DOUBLE_EQ(normalizeAngle(-M_PI), M_PI);  // -pi is excluded, maps to pi
-  EXPECT_NEAR(normalizeAngle(3.0 * M_PI), M_PI, kTol);
-  EXPECT_NEAR(normalizeAngle(2.0 * M_PI + 0.1), 0.1, kTol);
-  EXPECT_NEAR(normalizeAngle(-1.5 * M_PI), 0.5 * M_PI, kTol);
+  EXPECT_NEAR(normalizeAngle(3.0 * M_PI), M_PI, kPoseTol);
+  EXPECT_NEAR(normalizeAngle(2.0 * M_PI + 0.1), 0.1, kPoseTol);
+  EXPECT_NEAR(normalizeAngle(-1.5 * M_PI), 0.5 * M_PI, kPoseTol);
   EXPECT_NEAR(normalizeAngle(-0.25), -0.25, 0.0);
   EXPECT_NEAR(normalizeAngle(1000.0), 1000.0 - 159.0 * 2.0 * M_PI, 1e-9);
-  EXPECT_NEAR(angleDifference(M_PI - 0.1, -M_PI + 0.1), -0.2, kTol);
+  EXPECT_NEAR(angleDifference(M_PI - 0.1, -M_PI + 0.1), -0.2, kPoseTol);
   EXPECT_TRUE(std::isnan(normalizeAngle(std::nan(""))));
 
   std::mt19937 rng(7);
@@ -70,7 +70,7 @@ TEST(Pose2Test, NormalizeAngleWrapsToHalfOpenInterval) {
     EXPECT_NEAR(turns, std::round(turns), 1e-12);
   }
   EXPECT_GT(Pose2(0.0, 0.0, 7.0).theta, 0.0);
-  EXPECT_NEAR(Pose2(0.0, 0.0, 7.0).theta, 7.0 - 2.0 * M_PI, kTol);
+  EXPECT_NEAR(Pose2(0.0, 0.0, 7.0).theta, 7.0 - 2.0 * M_PI, kPoseTol);
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ Json splJson() {
   return Json::parse(in);
 }
 
-std::string errorOf(const std::string& text) {
+std::string importErrorOf(const std::string& text) {
   try {
     parseSplFieldDimensions(text, "dims.json");
   } catch (const FormatError& e) {
@@ -102,7 +102,7 @@ class InvalidSplTest : public ::testing::TestWithParam<Mutation> {};
 TEST_P(InvalidSplTest, RejectedNamingTheKey) {
   Json j = splJson();
   GetParam().apply(j);
-  const std::string message = errorOf(j.dump(2));
+  const std::string message = importErrorOf(j.dump(2));
   EXPECT_NE(message.find(GetParam().expected), std::string::npos) << message;
   EXPECT_EQ(message.rfind("dims.json: ", 0), 0u) << message;
 }
@@ -211,12 +211,14 @@ TEST(SplImportTest, TextLevelErrors) {
   std::string text = splJson().dump(2);
   // A key given twice; nlohmann alone would keep the last value silently.
   const std::string duplicated = text.replace(text.find("\"length\""), 0, "\"length\": 8.0,\n    ");
-  EXPECT_NE(errorOf(duplicated).find("dims.json: field.length: duplicate key"), std::string::npos)
-      << errorOf(duplicated);
+  EXPECT_NE(importErrorOf(duplicated).find("dims.json: field.length: duplicate key"),
+            std::string::npos)
+      << importErrorOf(duplicated);
   const std::string trailing_comma = "{\n  \"field\": {\"length\": 9.0,}\n}";
-  EXPECT_NE(errorOf(trailing_comma).find("dims.json: invalid JSON at line 2"), std::string::npos)
-      << errorOf(trailing_comma);
-  EXPECT_NE(errorOf("").find("dims.json: invalid JSON"), std::string::npos);
+  EXPECT_NE(importErrorOf(trailing_comma).find("dims.json: invalid JSON at line 2"),
+            std::string::npos)
+      << importErrorOf(trailing_comma);
+  EXPECT_NE(importErrorOf("").find("dims.json: invalid JSON"), std::string::npos);
   try {
     readSplFieldDimensions("/nonexistent/field_dimensions.json");
     FAIL();

@@ -30,13 +30,13 @@ const TableRow kTable[] = {
     {"msl", 22, 14, 0.125, 0.75, 3.9, 2.25, 6.9, 3.6, 0.15, true, 4.0, 1.0, 2.0, 0.125, 1.0, 4},
 };
 
-constexpr double kTol = 1e-12;
+constexpr double kFieldTol = 1e-12;
 
 bool hasSegment(const FieldModel& f, double x1, double y1, double x2, double y2) {
   const Eigen::Vector2d a(x1, y1), b(x2, y2);
   for (const Segment2& s : f.segments) {
-    if (((s.a - a).norm() < kTol && (s.b - b).norm() < kTol) ||
-        ((s.a - b).norm() < kTol && (s.b - a).norm() < kTol)) {
+    if (((s.a - a).norm() < kFieldTol && (s.b - b).norm() < kFieldTol) ||
+        ((s.a - b).norm() < kFieldTol && (s.b - a).norm() < kFieldTol)) {
       return true;
     }
   }
@@ -104,32 +104,32 @@ TEST_P(StandardFieldTest, CircleMarksGoalsAndCornerArcs) {
   for (const Mark& m : f.marks) {
     EXPECT_EQ(m.size, t.mark_size);  // the centre mark has the penalty mark's size
     EXPECT_EQ(m.shape, shape);
-    EXPECT_NEAR(m.center.y(), 0.0, kTol);
-    centre += std::abs(m.center.x()) < kTol;
-    own += std::abs(m.center.x() + mark_x) < kTol;
-    opponent += std::abs(m.center.x() - mark_x) < kTol;
+    EXPECT_NEAR(m.center.y(), 0.0, kFieldTol);
+    centre += std::abs(m.center.x()) < kFieldTol;
+    own += std::abs(m.center.x() + mark_x) < kFieldTol;
+    opponent += std::abs(m.center.x() - mark_x) < kFieldTol;
   }
   EXPECT_EQ(centre, 1);
   EXPECT_EQ(own, 1);
   EXPECT_EQ(opponent, 1);
 
   for (const Goal& g : f.goals) {
-    EXPECT_NEAR(std::abs(g.center.x()), hl, kTol);
-    EXPECT_NEAR(g.center.y(), 0.0, kTol);
+    EXPECT_NEAR(std::abs(g.center.x()), hl, kFieldTol);
+    EXPECT_NEAR(g.center.y(), 0.0, kFieldTol);
     EXPECT_EQ(g.inner_width, t.goal_inner);
     EXPECT_EQ(g.post_diameter, t.goal_post);
     EXPECT_EQ(g.height, t.goal_height);
   }
-  EXPECT_NEAR(f.goals[0].center.x() + f.goals[1].center.x(), 0.0, kTol);
+  EXPECT_NEAR(f.goals[0].center.x() + f.goals[1].center.x(), 0.0, kFieldTol);
 
   // Corner arcs: a quarter circle of radius 0.75 around each corner, lying inside the field.
   int corners = 0;
   for (std::size_t i = 1; i < f.arcs.size(); ++i) {
     const Arc2& a = f.arcs[i];
-    EXPECT_NEAR(std::abs(a.center.x()), hl, kTol);
-    EXPECT_NEAR(std::abs(a.center.y()), hw, kTol);
+    EXPECT_NEAR(std::abs(a.center.x()), hl, kFieldTol);
+    EXPECT_NEAR(std::abs(a.center.y()), hw, kFieldTol);
     EXPECT_EQ(a.radius, 0.75);
-    EXPECT_NEAR(a.sweep_rad, M_PI / 2, kTol);
+    EXPECT_NEAR(a.sweep_rad, M_PI / 2, kFieldTol);
     const Eigen::Vector2d middle = a.pointAt(a.start_rad + a.sweep_rad / 2);
     EXPECT_LT(std::abs(middle.x()), hl);
     EXPECT_LT(std::abs(middle.y()), hw);
@@ -150,7 +150,7 @@ INSTANTIATE_TEST_SUITE_P(AllFields, StandardFieldTest, ::testing::ValuesIn(kTabl
 TEST(StandardFieldsTest, SplPenaltyMarkAndNames) {
   const FieldModel spl = makeStandardField("spl");
   bool found = false;
-  for (const Mark& m : spl.marks) found = found || std::abs(m.center.x() - (4.5 - 1.3)) < kTol;
+  for (const Mark& m : spl.marks) found = found || std::abs(m.center.x() - (4.5 - 1.3)) < kFieldTol;
   EXPECT_TRUE(found) << "penalty mark at x = 4.5 - 1.3";
   EXPECT_EQ(standardFieldNames().size(), std::size(kTable));
   for (const TableRow& row : kTable) {

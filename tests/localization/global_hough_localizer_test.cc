@@ -8,13 +8,12 @@
 #include <limits>
 #include <random>
 
+#include "field_models/angles.h"
 #include "field_models/standard_fields.h"
 #include "tools/synthetic/synthetic_ground_points.h"
 
 namespace houghloc {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 bool near(const Pose2& a, const Pose2& b, double m, double rad) {
   return (a.translation() - b.translation()).norm() <= m &&

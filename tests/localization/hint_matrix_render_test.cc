@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "field_models/angles.h"
 #include "tests/localization/hint_walk.h"
 #include "tools/pipeline/localization_pipeline.h"
 #include "tools/recording/recording.h"
@@ -19,7 +20,6 @@ namespace {
 
 constexpr int kHintFrame = 30;    // 1.0 s
 constexpr int kKidnapFrame = 75;  // the kidnap walk's 2.5 s
-constexpr double kDeg = M_PI / 180.0;
 
 struct RenderCell {
   const char* walk;  ///< fixture folder (render_hint_fixtures.cmake)

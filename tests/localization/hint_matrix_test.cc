@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "field_models/angles.h"
 #include "field_models/spl_import.h"
 #include "field_models/standard_fields.h"
 #include "localization/localizer.h"
@@ -23,7 +24,6 @@ constexpr int kFrames = 105;      // 3.5 s at 30 fps
 constexpr int kHintFrame = 30;    // the hint at 1.0 s
 constexpr int kKidnapFrame = 75;  // 1.5 s after the hint
 constexpr double kHintSigmaRad = 0.3;
-constexpr double kDeg = M_PI / 180.0;
 const double kOffsetsM[] = {0.0, 0.25, 0.5};
 const double kOffsetsRad[] = {0.0, 6.0 * kDeg, 15.0 * kDeg};
 const double kSigmasM[] = {0.1, 0.5, 1.0};

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "field_models/angles.h"
 #include "field_models/standard_fields.h"
 #include "localization/hough_transform.h"
 #include "localization/map_signature.h"
@@ -13,8 +14,6 @@
 
 namespace houghloc {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 /// Points every `spacing` along the segment a-b, weight 1.
 void addLine(WeightedPoints& pts, Eigen::Vector2d a, Eigen::Vector2d b, double spacing = 0.05) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "field_models/angles.h"
 #include "field_models/standard_fields.h"
 #include "localization/hypothesis_set.h"
 #include "localization/landmarks.h"
@@ -14,8 +15,6 @@
 
 namespace houghloc {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 /// Map samples seen from field_T_robot within `range` (robot frame), weight 1.
 WeightedPoints view(const FieldModel& field, const Pose2& field_T_robot, double range,

@@ -7,12 +7,12 @@
 #include <opencv2/calib3d.hpp>
 #include <random>
 
+#include "field_models/angles.h"
 #include "vision/camera_presets.h"
 
 namespace houghloc {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 class PresetTest : public ::testing::TestWithParam<std::string> {

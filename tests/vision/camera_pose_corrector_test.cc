@@ -8,14 +8,13 @@
 #include <random>
 #include <vector>
 
+#include "field_models/angles.h"
 #include "field_models/standard_fields.h"
 #include "vision/camera_presets.h"
 #include "vision/line_width_model.h"
 
 namespace houghloc {
 namespace {
-
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 CameraPoseCorrectionConfig enabledConfig() {
   CameraPoseCorrectionConfig config;

@@ -11,6 +11,7 @@
 #include <ostream>
 #include <string>
 
+#include "field_models/angles.h"
 #include "field_models/field_distance.h"
 #include "localization/localizer.h"
 #include "tools/offline/vision_metrics.h"
@@ -34,8 +35,6 @@ struct FolderRun {
   Eigen::Vector2d final_estimate = Eigen::Vector2d::Zero();  ///< before the significance gate
   Eigen::Vector2d final_sigma = Eigen::Vector2d::Zero();
 };
-
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;

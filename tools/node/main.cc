@@ -57,12 +57,7 @@ int run(const NodeOptions& o, NodeLog& log, const std::atomic<bool>& stop) {
   lcm::LCM lcm(o.lcm_url);
   if (!lcm.good()) throw std::runtime_error("cannot open LCM URL '" + o.lcm_url + "'");
   NodeCore core(std::make_shared<const FieldModel>(field), config, cameras);
-  for (const auto& [id, pose] : o.static_camera_pose) {
-    if (!cameras.count(id))
-      throw std::runtime_error(o.config + ": node.static_camera_pose." + id +
-                               ": no --camera-yaml for camera '" + id + "'");
-    core.setStaticCameraPose(id, pose);
-  }
+  core.setStaticCameraPoses(o.static_camera_pose, o.config);
   NodeRunnerOptions runner_options;
   runner_options.save_pose = o.save_pose;
   runner_options.log = &log;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <stdexcept>
 
 #include "tools/lcm/message_conversion.h"
 
@@ -133,6 +134,16 @@ std::optional<NodeOutput> NodeCore::onImage(const image_t& msg) {
 
 void NodeCore::setStaticCameraPose(const std::string& camera_id, const Pose3& robot_T_camera) {
   static_camera_poses_[camera_id] = robot_T_camera;
+}
+
+void NodeCore::setStaticCameraPoses(const std::map<std::string, Pose3>& poses,
+                                    const std::string& config_file) {
+  for (const auto& [id, pose] : poses) {
+    if (!cameras_.count(id))
+      throw std::runtime_error(config_file + ": node.static_camera_pose." + id +
+                               ": no --camera-yaml for camera '" + id + "'");
+    setStaticCameraPose(id, pose);
+  }
 }
 
 void NodeCore::restorePose(const GaussianPose& field_T_robot) {

@@ -60,6 +60,10 @@ class NodeCore {
   /// robot_T_camera of a camera without head joints (config node: static_camera_pose): used
   /// for its images when no camera_pose_t of that camera lies within 50 ms.
   void setStaticCameraPose(const std::string& camera_id, const Pose3& robot_T_camera);
+  /// setStaticCameraPose() for each of `poses` (node: static_camera_pose of `config_file`);
+  /// throws std::runtime_error naming the file and key for a camera without a camera.yaml.
+  void setStaticCameraPoses(const std::map<std::string, Pose3>& poses,
+                            const std::string& config_file);
   /// A pose saved before a restart (--save-pose), as a RESET_TO hint before the first image.
   void restorePose(const GaussianPose& field_T_robot);
   /// A condition outside the core (a device that cannot be opened, say), shown in the status

@@ -160,6 +160,15 @@ void applyNodeConfig(const CLI::App& app, NodeOptions* o) {
   check(*o, "");
 }
 
+std::map<std::string, Pose3> readStaticCameraPoses(const std::string& config_file) {
+  const cv::FileStorage storage = openConfigFile(config_file);
+  const cv::FileNode section = storage["node"];
+  const std::string where = config_file + ": node";
+  if (section.empty() || section.isNone()) return {};
+  if (!section.isMap()) throw std::runtime_error(where + ": expected a map");
+  return readStaticPoses(section["static_camera_pose"], where + ".static_camera_pose");
+}
+
 std::string defaultNodeConfigYaml() {
   cv::FileStorage storage(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);
   writeVisionConfig(storage, VisionConfig{});

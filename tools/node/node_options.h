@@ -39,6 +39,11 @@ void addNodeOptions(CLI::App& app, NodeOptions* options);
 /// key at fault ("houghloc.yaml: node.foo: unknown key").
 void applyNodeConfig(const CLI::App& app, NodeOptions* options);
 
+/// The `node: static_camera_pose` map of a config file (empty without the key): what
+/// houghloc-offline --lcm-log needs to replay a node that ran with it. Throws like
+/// applyNodeConfig().
+std::map<std::string, Pose3> readStaticCameraPoses(const std::string& config_file);
+
 /// Every section's defaults (vision:, global:, tracker:, localizer:, node:) as a config file;
 /// applyNodeConfig() and loadOfflineConfig() of it give the defaults back.
 std::string defaultNodeConfigYaml();

@@ -81,6 +81,8 @@ void NodeRunner::run(const std::atomic<bool>& stop) {
   while (!stop) lcm_.handleTimeout(100);
   wake_.notify_all();
   processing.join();
+  // A last STATUS, so that subscribers (and a log's reader) see the final counters.
+  publishStatus(core_.status());
   if (!options_.save_pose.empty()) savePose();
 }
 

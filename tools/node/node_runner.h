@@ -33,7 +33,7 @@ class NodeRunner {
  public:
   NodeRunner(lcm::LCM& lcm, NodeCore& core, const std::string& channel_prefix,
              bool publish_line_points, const NodeRunnerOptions& options = {});
-  /// Runs both threads until `stop` is set; returns within ~0.2 s of that.
+  /// Runs both threads until `stop` is set, then publishes a last STATUS; returns within ~0.2 s.
   void run(const std::atomic<bool>& stop);
 
   /// An image as if it had arrived on <PREFIX>IMAGE; any thread.

@@ -22,6 +22,11 @@ constexpr double kMinDirectionSeparationDeg = 30.0;
 constexpr double kSameDirectionToleranceDeg = 5.0;  ///< segments this close share a direction
 constexpr double kMinCircleLengthM = 1.0;           ///< visible centre circle
 
+/// count / total; 0 when total is 0.
+inline double rate(int count, int total) {
+  return total > 0 ? static_cast<double>(count) / total : 0.0;
+}
+
 struct PoseError {
   double position_m = 0.0;
   double heading_rad = 0.0;  ///< absolute, in [0, pi]

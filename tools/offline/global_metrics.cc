@@ -7,8 +7,6 @@
 namespace houghloc {
 namespace {
 
-double rate(int count, int total) { return total > 0 ? static_cast<double>(count) / total : 0.0; }
-
 /// Rank of the first hypothesis correct up to symmetry; -1 when there is none.
 int firstCorrectRank(const std::vector<GaussianPose>& hypotheses, const Pose2& truth) {
   for (size_t r = 0; r < hypotheses.size(); ++r) {

@@ -7,6 +7,7 @@
 #include "field_models/field_validation.h"
 #include "field_models/field_yaml.h"
 #include "field_models/standard_fields.h"
+#include "tools/node/node_options.h"
 #include "tools/offline/lcm_log_replay.h"
 #include "tools/offline/localization_evaluation.h"
 #include "tools/offline/offline_config.h"
@@ -71,6 +72,10 @@ int runLcmLog(const OfflineOptions& options) {
   const OfflineConfig loaded = loadOfflineConfig(options.config_file);
   input.config.vision = loaded.vision;
   input.config.localizer = loaded.localizer;
+  if (!options.config_file.empty()) {
+    input.static_camera_poses = readStaticCameraPoses(options.config_file);
+    input.config_file = options.config_file;
+  }
   for (const std::string& arg : options.camera_yamls) {
     const auto eq = arg.find('=');
     const std::string id = eq == std::string::npos ? "" : arg.substr(0, eq);

@@ -77,6 +77,7 @@ LogReplayResult replayLcmLog(const LogReplayInput& input,
 
   // Second pass: the node's inputs in log order.
   NodeCore core(input.field, input.config, input.cameras);
+  core.setStaticCameraPoses(input.static_camera_poses, input.config_file);
   LcmLogReader reader(input.log_path);
   while (const lcm::LogEvent* e = reader.next()) {
     const std::string& channel = e->channel;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "field_models/field_model.h"
+#include "field_models/pose3.h"
 #include "tools/offline/estimate_csv.h"
 #include "tools/pipeline/localization_pipeline.h"
 #include "tools/recording/recording.h"
@@ -19,8 +20,10 @@ struct LogReplayInput {
   std::string log_path;
   std::string channel_prefix;  ///< as the node's --channel-prefix
   std::shared_ptr<const FieldModel> field;
-  PipelineConfig config;                            ///< composed as houghloc-node composes it
-  std::map<std::string, CameraIntrinsics> cameras;  ///< per camera id, as --camera-yaml
+  PipelineConfig config;                             ///< composed as houghloc-node composes it
+  std::map<std::string, CameraIntrinsics> cameras;   ///< per camera id, as --camera-yaml
+  std::map<std::string, Pose3> static_camera_poses;  ///< the node's config static_camera_pose
+  std::string config_file;                           ///< where they come from, for errors
 };
 
 /// The replay's outputs and how they compare with the node's logged HYPOTHESES.

@@ -9,7 +9,6 @@
 namespace houghloc {
 namespace {
 
-double rate(int count, int total) { return total > 0 ? static_cast<double>(count) / total : 0.0; }
 double degrees(double rad) { return rad * 180.0 / M_PI; }
 
 bool bestCorrect(const EvaluatedFrame& f) {

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "field_models/angles.h"
+
 namespace houghloc {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 /// Wraps tau into [0, period).
 double wrapTime(double tau, double period) {

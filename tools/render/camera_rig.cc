@@ -4,10 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "field_models/angles.h"
+
 namespace houghloc {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
 constexpr double kFallingShare = 0.1;  ///< of a fall's duration spent falling over
 constexpr double kGetUpShare = 0.2;    ///< of a fall's duration spent getting up
 constexpr double kLyingCameraHeight_m = 0.1;

@@ -7,16 +7,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "field_models/angles.h"
 #include "tools/render/yaml_map.h"
 
 namespace houghloc {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
-
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument(what);
-}
 
 /// 0 outside [start, end], 1 inside, linear ramps of ramp_s at both ends inside the window.
 double rampedShare(const FaultConfig& f, double t) {

@@ -6,11 +6,12 @@
 #include "tools/render/faults.h"
 
 namespace houghloc {
-namespace {
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument(what);
 }
+
+namespace {
 
 bool oneOf(const std::string& value, std::initializer_list<const char*> names) {
   return std::any_of(names.begin(), names.end(), [&](const char* n) { return value == n; });

@@ -195,4 +195,7 @@ Scenario loadScenario(const std::string& path);
 /// the member at fault.
 void validateScenario(const Scenario& scenario);
 
+/// The scenario checks' way to fail: throws std::invalid_argument(what) unless ok.
+void require(bool ok, const std::string& what);
+
 }  // namespace houghloc

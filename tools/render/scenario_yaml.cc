@@ -4,6 +4,7 @@
 #include <opencv2/core.hpp>
 #include <stdexcept>
 
+#include "field_models/angles.h"
 #include "field_models/yaml_precheck.h"
 #include "tools/render/faults.h"
 #include "tools/render/scenario.h"
@@ -11,8 +12,6 @@
 
 namespace houghloc {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 /// A sequence of numbers of length min_size..max_size.
 std::vector<double> numbers(const cv::FileNode& node, const std::string& name, size_t min_size,

@@ -4,10 +4,11 @@
 #include <cmath>
 #include <random>
 
+#include "field_models/angles.h"
+
 namespace houghloc {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
 constexpr double kFallingTime_s = 0.3;  ///< from upright to lying
 
 /// First frame time at or after t (events line up with frames).

@@ -60,13 +60,14 @@ echo "device: warned $warned, retried $retried times in 5 s of running, status $
 
 # 3. SIGTERM while processing, then a second node restores the saved pose.
 pose="$work/pose.yaml"
+rm -f "$work/run1.err"
 unshare -n bash -euo pipefail -c '
   eval "$HOUGHLOC_NETNS_SETUP"
   url=$HOUGHLOC_TEST_URL
   "$2" --field "$3/field.yaml" --camera-yaml "$3/camera.yaml" --lcm-url "$url" \
     --save-pose "$4" --log-level info 2> "$1/run1.err" &
   node=$!
-  sleep 1.5
+  houghloc_wait_running "$1/run1.err"
   "$5" "$3" --lcm-url "$url" &
   play=$!
   sleep 4

@@ -7,13 +7,13 @@
 #include <fstream>
 #include <sstream>
 
+#include "field_models/angles.h"
 #include "field_models/standard_fields.h"
 #include "tools/offline/evaluation_frames.h"
 
 namespace houghloc {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
 constexpr std::int64_t kStepUs = 100000;  // 10 frames per second
 
 /// A recording of `n` frames 100 ms apart with ground truth at each frame.

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <lcm/lcm-cpp.hpp>
+#include <map>
 #include <opencv2/imgcodecs.hpp>
 
 #include "tests/tools/offline/offline_cli_fixture.h"
@@ -62,19 +63,23 @@ class OfflineLcmLog : public ::testing::Test {
 
   /// The node's core on the folder, as houghloc-play publishes it (YUYV), with a hint at frame
   /// 12 and every fifth image left unprocessed (as when the node falls behind); everything
-  /// logged in arrival order, plus another robot's channels and LINE_POINTS.
-  void writeLog(const std::string& path) {
+  /// logged in arrival order, plus another robot's channels and LINE_POINTS. With
+  /// `static_poses`, the core has those (config static_camera_pose) and no CAMERA_POSE is sent.
+  void writeLog(const std::string& path, const std::map<std::string, Pose3>& static_poses = {}) {
     NodeCore core(std::make_shared<const FieldModel>(*rec_.field), PipelineConfig{}, cameras_);
+    core.setStaticCameraPoses(static_poses, "test");
     LogWriter log(path);
     ASSERT_TRUE(log.good());
     for (std::size_t i = 0; i < rec_.frames.size(); ++i) {
       const FrameRecord& f = rec_.frames[i];
       const odometry_t odometry = odometryToMessage(f.t_us, f.odometry.value());
-      const camera_pose_t pose = cameraPoseToMessage(f.t_us, f.camera_id, f.robot_T_camera);
       core.onOdometry(odometry);
-      core.onCameraPose(pose);
       log.write(kPrefix + "ODOMETRY", odometry, f.t_us);
-      log.write(kPrefix + "CAMERA_POSE", pose, f.t_us);
+      if (static_poses.empty()) {
+        const camera_pose_t pose = cameraPoseToMessage(f.t_us, f.camera_id, f.robot_T_camera);
+        core.onCameraPose(pose);
+        log.write(kPrefix + "CAMERA_POSE", pose, f.t_us);
+      }
       if (i == 12) {
         LocalizationHint hint;
         hint.kind = HintKind::kAdd;
@@ -153,6 +158,37 @@ TEST_F(OfflineLcmLog, ReproducesTheLoggedPoses) {
             std::string::npos)
       << text.str();
   EXPECT_TRUE(fs::exists(out / "trajectory.png"));
+}
+
+// A node that ran with `node: static_camera_pose` (no CAMERA_POSE in its log) is replayed with
+// the same config file; without it the images have no camera pose and are refused.
+TEST_F(OfflineLcmLog, StaticCameraPoseComesFromTheNodeConfig) {
+  std::map<std::string, Pose3> poses;
+  for (const FrameRecord& f : rec_.frames) poses.emplace(f.camera_id, f.robot_T_camera);
+  ASSERT_EQ(poses.size(), cameras_.size());
+  const fs::path config = work_ / "static.yaml";
+  {
+    std::ofstream yaml(config);
+    yaml << "%YAML:1.0\nnode:\n  static_camera_pose:\n";
+    char line[400];
+    for (const auto& [id, p] : poses) {
+      std::snprintf(line, sizeof line, "    %s: [%.17g, %.17g, %.17g, %.17g, %.17g, %.17g]\n",
+                    id.c_str(), p.x, p.y, p.z, p.roll, p.pitch, p.yaw);
+      yaml << line;
+    }
+  }
+  const std::string log = (work_ / "static.log").string();
+  writeLog(log, poses);
+  const std::string common = "--lcm-log " + log + " --standard spl" + camera_args_ +
+                             " --channel-prefix " + kPrefix + " -o ";
+  const RunResult with =
+      run(common + (work_ / "static_out").string() + " --config " + config.string());
+  ASSERT_EQ(with.exit_code, 0) << with.output;
+  EXPECT_EQ(readFrameEstimates((work_ / "static_out").string()).size(), logged_.size());
+  EXPECT_NE(with.output.find("max difference to log    0 "), std::string::npos) << with.output;
+
+  const RunResult without = run(common + (work_ / "static_out_none").string());
+  EXPECT_NE(without.output.find("refused here"), std::string::npos) << without.output;
 }
 
 TEST_F(OfflineLcmLog, NamesAFileThatIsNotAnLcmLog) {

@@ -3,12 +3,11 @@
 #include <cmath>
 #include <limits>
 
+#include "field_models/angles.h"
 #include "tools/recording/recording.h"
 
 namespace houghloc {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 const std::vector<GroundTruthRecord> kTruth = {
     {1'000'000, Pose2(0.0, 0.0, 0.0)},

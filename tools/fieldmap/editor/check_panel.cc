@@ -12,13 +12,12 @@
 #include <cmath>
 #include <utility>
 
+#include "field_models/angles.h"
 #include "field_models/field_distance.h"
 #include "tools/fieldmap/editor/field_view.h"
 
 namespace houghloc::fieldmap {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 QString centimetres(double m) { return QString::number(100.0 * m, 'f', 1); }
 

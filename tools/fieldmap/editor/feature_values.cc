@@ -2,10 +2,10 @@
 
 #include <cmath>
 
+#include "field_models/angles.h"
+
 namespace houghloc::fieldmap {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 /// FieldDimensions members in panel order.
 const std::pair<const char*, double FieldDimensions::*> kDimensions[] = {
