@@ -2,6 +2,7 @@
 
 #include <yaml.h>
 
+#include <algorithm>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -20,6 +21,25 @@ std::string withoutOpenCvHeader(const std::string& text) {
   const std::size_t end = blanked.find('\n', first);
   blanked.replace(first, (end == std::string::npos ? blanked.size() : end) - first, "");
   return blanked;
+}
+
+/// OpenCV reads the version of "%YAML:<major>.<minor>" with std::stoi, which throws
+/// std::out_of_range (message "stoi", no file) on a long run of digits (tests/fuzz/field_yaml):
+/// only "%YAML:1.<digits>" is accepted.
+void checkOpenCvHeader(const std::string& text, const std::string& source_name) {
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos || text.compare(first, 6, "%YAML:") != 0) return;
+  const std::size_t end = std::min(text.find('\n', first), text.size());
+  std::string header = text.substr(first, end - first);
+  header.erase(header.find_last_not_of(" \t\r") + 1);
+  const std::string version = header.substr(6);
+  const bool ok = version.size() >= 3 && version.size() <= 6 && version.compare(0, 2, "1.") == 0 &&
+                  version.find_first_not_of("0123456789", 2) == std::string::npos;
+  if (!ok) {
+    const auto line = 1 + std::count(text.begin(), text.begin() + first, '\n');
+    throw FormatError(source_name + ": line " + std::to_string(line) +
+                      ": expected the header %YAML:1.0, not '" + header.substr(0, 40) + "'");
+  }
 }
 
 void checkParsesAsMap(const std::string& text, const std::string& source_name) {
@@ -85,6 +105,7 @@ void checkIndentation(const std::string& text, const std::string& source_name) {
 }  // namespace
 
 void checkYamlBeforeFileStorage(const std::string& text, const std::string& source_name) {
+  checkOpenCvHeader(text, source_name);
   checkIndentation(text, source_name);
   checkParsesAsMap(text, source_name);
 }

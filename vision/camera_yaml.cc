@@ -15,13 +15,18 @@ namespace {
   throw std::runtime_error(path + ": key '" + key + "': " + what);
 }
 
-int readPositiveInt(const cv::FileNode& root, const std::string& path, const std::string& key) {
+/// Image sides above this are refused: no robot camera has them, and the vision allocates per
+/// pixel (tests/fuzz/camera_yaml: a width of 100000000280 asked for 9.7 GB).
+constexpr int kMaxImageSidePx = 16384;
+
+int readImageSide(const cv::FileNode& root, const std::string& path, const std::string& key) {
   const cv::FileNode node = root[key];
   if (node.empty()) fail(path, key, "missing");
   if (!node.isInt()) fail(path, key, "expected an integer");
-  const int value = static_cast<int>(node);
-  if (value <= 0) fail(path, key, "must be positive, got " + std::to_string(value));
-  return value;
+  const double exact = node.real();  // before the narrowing to int
+  if (!(exact >= 1 && exact <= kMaxImageSidePx))
+    fail(path, key, "must be 1 to " + std::to_string(kMaxImageSidePx) + " pixels");
+  return static_cast<int>(node);
 }
 
 /// Numbers of an `!!opencv-matrix` (any shape) or of a plain sequence `[a, b, ...]`.
@@ -64,8 +69,8 @@ std::vector<double> readNumbers(const cv::FileNode& node, const std::string& pat
 /// The keys of an opened camera.yaml (DESIGN §5.1).
 CameraIntrinsics readIntrinsics(const cv::FileNode& root, const std::string& path) {
   CameraIntrinsics in;
-  in.image_width = readPositiveInt(root, path, "image_width");
-  in.image_height = readPositiveInt(root, path, "image_height");
+  in.image_width = readImageSide(root, path, "image_width");
+  in.image_height = readImageSide(root, path, "image_height");
 
   const cv::FileNode matrix_node = root["camera_matrix"];
   if (matrix_node.empty()) fail(path, "camera_matrix", "missing");

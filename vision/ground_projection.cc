@@ -60,7 +60,10 @@ std::vector<GroundPoint> projectSpots(const std::vector<SpotRay>& rays, const Po
     }
     const std::int64_t cx = static_cast<std::int64_t>(std::floor(p->x() / cell));
     const std::int64_t cy = static_cast<std::int64_t>(std::floor(p->y() / cell));
-    if (!cells.insert((cx << 32) ^ (cy & 0xffffffff)).second) {
+    // The key packs both cell indices; shifted as unsigned (a negative index shifted is UB).
+    const auto key = static_cast<std::int64_t>((static_cast<std::uint64_t>(cx) << 32) ^
+                                               (static_cast<std::uint64_t>(cy) & 0xffffffffu));
+    if (!cells.insert(key).second) {
       if (stats) ++stats->thinned;
       continue;
     }
