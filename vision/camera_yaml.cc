@@ -23,7 +23,7 @@ int readImageSide(const cv::FileNode& root, const std::string& path, const std::
   const cv::FileNode node = root[key];
   if (node.empty()) fail(path, key, "missing");
   if (!node.isInt()) fail(path, key, "expected an integer");
-  const double exact = node.real();  // before the narrowing to int
+  const double exact = node.real();  // the value as OpenCV stored it
   if (!(exact >= 1 && exact <= kMaxImageSidePx))
     fail(path, key, "must be 1 to " + std::to_string(kMaxImageSidePx) + " pixels");
   return static_cast<int>(node);
