@@ -45,7 +45,9 @@ void CameraPoseCorrector::reset() {
   last_map_inliers_ = 0;
   line_sigma_.setConstant(std::numeric_limits<double>::infinity());
   estimate_.setZero();
+  solution_.setZero();
   runaway_ = false;
+  runaway_frames_ = 0;
   applied_.setZero();
   sigma_.setConstant(std::numeric_limits<double>::infinity());
   frames_.clear();
@@ -173,16 +175,31 @@ void CameraPoseCorrector::cacheQuadratic(Frame* frame) const {
 bool CameraPoseCorrector::solve() {
   // The prior keeps directions the lines seen so far do not constrain at 0.
   const double prior = 1.0 / (config_.prior_sigma_rad * config_.prior_sigma_rad);
-  Eigen::Vector2d c = runaway_ ? Eigen::Vector2d::Zero() : estimate_;
+  // After a runaway the solve restarts from 0 (re-linearising every frame there). A runaway
+  // that persists in a larger window (a camera whose lines never constrain its tilt: the NAO's
+  // bottom camera) goes on from where it ended, not applied, and restarts only every
+  // runaway_restart_solves: restarting at every frame re-linearised the whole window twice per
+  // frame (16 ms per image after two minutes, tests/tools/node/node_soak_test).
+  const int restart_every = std::max(1, config_.runaway_restart_solves);
+  const bool restart =
+      runaway_ && (static_cast<int>(frames_.size()) <= config_.runaway_restart_frames ||
+                   runaway_frames_ % restart_every == 1);
+  Eigen::Vector2d c = restart ? Eigen::Vector2d::Zero() : runaway_ ? solution_ : estimate_;
   Eigen::Matrix2d information = Eigen::Matrix2d::Zero();
   Eigen::Matrix2d line_information = Eigen::Matrix2d::Zero();  ///< of the lines and arcs alone
   double chi2 = 0.0;
   long residual_count = 0;
   // Re-linearise the frames the estimate moved away from, solve on the linear model, repeat
   // while the solution moves (only while converging from a large error).
+  // A runaway going on is not applied, so its frames need re-linearising only when it moved by
+  // a fair part of its own uncertainty (it drifts with every frame, so loosely is it held).
+  const double relinearize_rad =
+      runaway_ && !restart
+          ? std::clamp(0.1 * sigma_.maxCoeff(), config_.relinearize_rad, config_.max_correction_rad)
+          : config_.relinearize_rad;
   for (int pass = 0; pass < 3; ++pass) {
     for (Frame& frame : frames_) {
-      const bool moved = !((c - frame.at).cwiseAbs().maxCoeff() <= config_.relinearize_rad);
+      const bool moved = !((c - frame.at).cwiseAbs().maxCoeff() <= relinearize_rad);
       // Also when the tilt is now known well enough to match points 20 % farther out.
       const bool reach = !frame.map.empty() && frame.map_range_m < config_.map.max_range_m &&
                          mapRange(frame) > 1.2 * frame.map_range_m + 0.05;
@@ -226,14 +243,17 @@ bool CameraPoseCorrector::solve() {
       c += step;
       if (step.norm() < 1e-8) it = config_.iterations - 1;  // converged: measure, then stop
     }
-    if ((c - start).cwiseAbs().maxCoeff() <= config_.relinearize_rad) break;
+    if ((c - start).cwiseAbs().maxCoeff() <= relinearize_rad) break;
   }
   const double limit = config_.max_correction_rad;
   estimate_ = c.cwiseMax(-limit).cwiseMin(limit);
   // A solution at or beyond the limit is a runaway of the linearised steps on too little data:
   // the first segments of a walk with a 2 deg error once sent it to +4 deg, then to -4 deg, and
-  // it stayed there, applied, for 3 s. It is not applied, and the next solve starts from 0.
+  // it stayed there, applied, for 3 s. It is not applied, and the next solve starts from 0
+  // (see the start of this function).
   runaway_ = (c.cwiseAbs().array() >= limit).any();
+  runaway_frames_ = runaway_ ? runaway_frames_ + 1 : 0;
+  solution_ = c;
   // Covariance of the estimate; each frame's heading is a nuisance parameter, and sigmas from
   // a few spots' rms may be too small, so the residual chi^2 per degree of freedom scales it up.
   long nuisance = 2;  // roll, pitch; plus each frame's heading and each arc's centre

@@ -39,6 +39,11 @@ struct CameraPoseCorrectionConfig {
                                         ///< the lines seen so far do not constrain
   double max_correction_rad = 0.07;     ///< larger |roll| or |pitch| estimates (4 deg) are
                                         ///< runaways on too little data: not applied
+  int runaway_restart_frames = 60;      ///< a runaway restarts from 0 at every frame while the
+                                        ///< window holds at most this many frames (cheap then)
+  int runaway_restart_solves = 300;     ///< then every this many frames (10 s at 30 Hz): a wrong
+                                        ///< minimum is left in time, and the full
+                                        ///< re-linearisation of a restart stays rare
   int iterations = 8;                   ///< Gauss-Newton steps per frame (on the linearised
                                         ///< residuals: cheap)
   double relinearize_rad = 3e-4;        ///< a frame's residuals are re-linearised once the
@@ -180,7 +185,9 @@ class CameraPoseCorrector {
   std::deque<Frame> frames_;
   int last_map_inliers_ = 0;
   Eigen::Vector2d estimate_ = Eigen::Vector2d::Zero();
-  bool runaway_ = false;  ///< the last solve ended at max_correction_rad (estimate_ clamped)
+  bool runaway_ = false;    ///< the last solve ended at max_correction_rad (estimate_ clamped)
+  int runaway_frames_ = 0;  ///< solves in a row that ended so
+  Eigen::Vector2d solution_ = Eigen::Vector2d::Zero();  ///< the last solve's, before clamping
   Eigen::Vector2d applied_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d sigma_ = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
   /// The estimate's sigma from the lines and arcs alone (the map residuals left out).

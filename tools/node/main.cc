@@ -6,15 +6,16 @@
 #include <iostream>
 #include <lcm/lcm-cpp.hpp>
 #include <memory>
+#include <optional>
+#include <string>
 #include <thread>
 
-#include "field_models/field_yaml.h"
-#include "field_models/standard_fields.h"
 #include "tools/lcm/stop_signal.h"
 #include "tools/node/device_grabber.h"
 #include "tools/node/node_options.h"
 #include "tools/node/node_runner.h"
 #include "tools/offline/offline_config.h"
+#include "tools/offline/run_field.h"
 
 namespace houghloc {
 namespace {
@@ -29,28 +30,41 @@ std::map<std::string, CameraIntrinsics> loadCameras(const NodeOptions& o) {
   return cameras;
 }
 
-void restorePose(const NodeOptions& o, const PoseFileConfig& config, NodeCore& core, NodeLog& log) {
-  std::optional<GaussianPose> pose = loadPoseFile(o.save_pose);
-  if (!pose) {
-    log.info("no saved pose in " + o.save_pose + " yet");
-    return;
+/// The pose saved by an earlier run (--save-pose), read before the map is built so that its
+/// problems show at once. A file that is not a saved pose is reported and ignored: the node's
+/// own state file must not keep the robot from localizing (it starts as on a first start, and
+/// the next save replaces the file).
+std::optional<GaussianPose> readSavedPose(const NodeOptions& o, NodeLog& log) {
+  if (o.save_pose.empty()) return std::nullopt;
+  try {
+    std::optional<GaussianPose> pose = loadPoseFile(o.save_pose);
+    if (!pose) log.info("no saved pose in " + o.save_pose + " yet");
+    return pose;
+  } catch (const std::runtime_error& e) {
+    log.warn(std::string(e.what()) + "; starting without a saved pose");
+    return std::nullopt;
   }
+}
+
+void restorePose(GaussianPose pose, const NodeOptions& o, const PoseFileConfig& config,
+                 NodeCore& core, NodeLog& log) {
   const double s = config.restore_sigma_m, t = config.restore_sigma_rad;
-  pose->covariance = Eigen::Vector3d(s * s, s * s, t * t).asDiagonal();
-  core.restorePose(*pose);
+  pose.covariance = Eigen::Vector3d(s * s, s * s, t * t).asDiagonal();
+  core.restorePose(pose);
   char text[200];
   std::snprintf(text, sizeof(text),
-                "restored pose %.6f %.6f %.6f from %s (RESET_TO, %.2f m, %.2f rad)", pose->mean.x,
-                pose->mean.y, pose->mean.theta, o.save_pose.c_str(), s, t);
+                "restored pose %.6f %.6f %.6f from %s (RESET_TO, %.2f m, %.2f rad)", pose.mean.x,
+                pose.mean.y, pose.mean.theta, o.save_pose.c_str(), s, t);
   log.info(text);
 }
 
 int run(const NodeOptions& o, NodeLog& log, const std::atomic<bool>& stop) {
   if (o.field.empty() == o.standard.empty())
     throw std::runtime_error("give --field FILE or --standard NAME");
-  const FieldModel field = o.field.empty() ? makeStandardField(o.standard) : readFieldYaml(o.field);
+  const FieldModel field = loadRunField(o.field, o.standard);
   const std::map<std::string, CameraIntrinsics> cameras = loadCameras(o);
   const OfflineConfig loaded = loadOfflineConfig(o.config);
+  const std::optional<GaussianPose> saved_pose = readSavedPose(o, log);
   PipelineConfig config;
   config.vision = loaded.vision;
   config.localizer = loaded.localizer;
@@ -61,7 +75,7 @@ int run(const NodeOptions& o, NodeLog& log, const std::atomic<bool>& stop) {
   NodeRunnerOptions runner_options;
   runner_options.save_pose = o.save_pose;
   runner_options.log = &log;
-  if (!o.save_pose.empty()) restorePose(o, runner_options.pose_file, core, log);
+  if (saved_pose) restorePose(*saved_pose, o, runner_options.pose_file, core, log);
   NodeRunner runner(lcm, core, o.channel_prefix, o.publish_line_points == "on", runner_options);
 
   std::vector<std::unique_ptr<DeviceGrabber>> grabbers;

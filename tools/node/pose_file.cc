@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "field_models/yaml_precheck.h"
+
 namespace houghloc {
 
 void savePoseFile(const std::string& path, const GaussianPose& pose) {
@@ -36,6 +38,7 @@ std::optional<GaussianPose> loadPoseFile(const std::string& path) {
   text << file.rdbuf();
   std::string yaml = text.str();
   if (yaml.rfind("%YAML", 0) != 0) yaml = "%YAML:1.0\n---\n" + yaml;  // a hand-written file
+  checkYamlBeforeFileStorage(yaml, path);  // text that makes FileStorage hang or crash
   cv::FileStorage storage;
   try {
     storage.open(yaml,

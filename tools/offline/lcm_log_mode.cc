@@ -4,14 +4,12 @@
 #include <optional>
 #include <stdexcept>
 
-#include "field_models/field_validation.h"
-#include "field_models/field_yaml.h"
-#include "field_models/standard_fields.h"
 #include "tools/node/node_options.h"
 #include "tools/offline/lcm_log_replay.h"
 #include "tools/offline/localization_evaluation.h"
 #include "tools/offline/offline_config.h"
 #include "tools/offline/progress.h"
+#include "tools/offline/run_field.h"
 
 namespace houghloc {
 namespace {
@@ -36,20 +34,6 @@ void rejectFolderOptions(const OfflineOptions& o) {
     throw std::runtime_error("--lcm-log needs --field FILE or --standard NAME (the node's)");
 }
 
-FieldModel loadField(const OfflineOptions& o) {
-  if (!o.standard.empty()) {
-    try {
-      return makeStandardField(o.standard);
-    } catch (const std::invalid_argument& e) {
-      throw std::runtime_error(std::string("--standard: ") + e.what());
-    }
-  }
-  FieldModel field = readFieldYaml(o.field_file);
-  const std::vector<FieldIssue> issues = validateField(field);
-  if (!issues.empty()) throw std::runtime_error(o.field_file + ": " + issues.front().toString());
-  return field;
-}
-
 void printSummary(const std::string& out_dir, const LogReplayResult& r) {
   std::printf("houghloc-offline --lcm-log -> %s\n", out_dir.c_str());
   std::printf("  images in the log        %d (%d HYPOTHESES logged)\n", r.images,
@@ -66,7 +50,7 @@ int runLcmLog(const OfflineOptions& options) {
   LogReplayInput input;
   input.log_path = options.lcm_log;
   input.channel_prefix = options.channel_prefix;
-  const FieldModel field = loadField(options);
+  const FieldModel field = loadRunField(options.field_file, options.standard);
   input.field = std::make_shared<const FieldModel>(field);
   // As houghloc-node composes its PipelineConfig from the same config file.
   const OfflineConfig loaded = loadOfflineConfig(options.config_file);

@@ -4,11 +4,9 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "field_models/field_validation.h"
-#include "field_models/field_yaml.h"
-#include "field_models/standard_fields.h"
 #include "tools/offline/hint_conversion.h"
 #include "tools/offline/offline_config.h"
+#include "tools/offline/run_field.h"
 
 namespace houghloc {
 
@@ -33,21 +31,8 @@ OfflineContext loadOfflineContext(const OfflineOptions& options) {
     throw std::runtime_error(options.folder + ": not a folder");
   }
   context.recording = readRecording(options.folder);
-  if (!options.field_file.empty()) {
-    context.field = readFieldYaml(options.field_file);
-    // A map that fails validation (a zero-length segment, say) localizes wrongly without a sign.
-    const std::vector<FieldIssue> issues = validateField(*context.field);
-    if (!issues.empty()) {
-      throw std::runtime_error(options.field_file + ": " + issues.front().toString() + " (" +
-                               std::to_string(issues.size()) +
-                               " issue(s), houghloc-fieldmap validate lists them)");
-    }
-  } else if (!options.standard.empty()) {
-    try {
-      context.field = makeStandardField(options.standard);
-    } catch (const std::invalid_argument& e) {
-      throw std::runtime_error(std::string("--standard: ") + e.what());
-    }
+  if (!options.field_file.empty() || !options.standard.empty()) {
+    context.field = loadRunField(options.field_file, options.standard);
   } else if (context.recording.field) {
     context.field = context.recording.field;
   }

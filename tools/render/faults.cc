@@ -24,7 +24,8 @@ double rampedShare(const FaultConfig& f, double t) {
 
 const std::vector<std::string>& faultKinds() {
   static const std::vector<std::string> kinds = {
-      "odometry_dropout", "robots_in_view", "motion_blur", "light_change", "camera_pose_delay"};
+      "odometry_dropout",  "robots_in_view", "motion_blur",        "light_change",
+      "camera_pose_delay", "odometry_scale", "camera_pitch_error", "frame_drop"};
   return kinds;
 }
 
@@ -45,16 +46,22 @@ void readFault(YamlMap& m, FaultConfig& f) {
     m.read("ramp_s", f.ramp_s);
   } else if (f.kind == "camera_pose_delay") {
     m.read("delay_ms", f.delay_ms);
+  } else if (f.kind == "odometry_scale") {
+    m.read("scale", f.scale);
+  } else if (f.kind == "camera_pitch_error") {
+    m.read("pitch_deg", f.pitch_deg);
+  } else if (f.kind == "frame_drop") {
+    m.read("drop_fraction", f.drop_fraction);
   }
 }
 
 void validateFault(const FaultConfig& f, size_t index) {
   const std::string at = "faults[" + std::to_string(index) + "]";
   const auto& kinds = faultKinds();
+  std::string known;
+  for (const std::string& kind : kinds) known += (known.empty() ? "" : ", ") + kind;
   require(std::find(kinds.begin(), kinds.end(), f.kind) != kinds.end(),
-          at + ".kind: unknown fault '" + f.kind +
-              "' (known: odometry_dropout, robots_in_view, motion_blur, light_change, "
-              "camera_pose_delay)");
+          at + ".kind: unknown fault '" + f.kind + "' (known: " + known + ")");
   require(f.start_s >= 0.0, at + ".start_s: must not be negative");
   require(f.end_s > f.start_s, at + ".end_s: must be after start_s");
   require(f.robots >= 1 && f.robots <= 10, at + ".robots: must be 1 to 10");
@@ -72,6 +79,10 @@ void validateFault(const FaultConfig& f, size_t index) {
   require(f.kind != "light_change" || (f.ramp_s >= 0.0 && 2.0 * f.ramp_s <= f.end_s - f.start_s),
           at + ".ramp_s: must be in [0, (end_s - start_s) / 2]");
   require(f.delay_ms >= 0.0 && f.delay_ms <= 2000.0, at + ".delay_ms: must be in [0, 2000]");
+  require(f.scale >= 0.0 && f.scale <= 10.0, at + ".scale: must be in [0, 10]");
+  require(std::abs(f.pitch_deg) <= 45.0, at + ".pitch_deg: must be in [-45, 45]");
+  require(f.drop_fraction >= 0.0 && f.drop_fraction <= 1.0,
+          at + ".drop_fraction: must be in [0, 1]");
 }
 
 const FaultConfig* activeFault(const std::vector<FaultConfig>& faults, const std::string& kind,
@@ -80,6 +91,22 @@ const FaultConfig* activeFault(const std::vector<FaultConfig>& faults, const std
     if (f.kind == kind && t >= f.start_s && t < f.end_s) return &f;
   }
   return nullptr;
+}
+
+Pose2 recordedOdometryStep(const std::vector<FaultConfig>& faults, const Pose2& walked, double t) {
+  const FaultConfig* f = activeFault(faults, "odometry_scale", t);
+  if (!f) return walked;
+  return Pose2(f->scale * walked.x, f->scale * walked.y, f->scale * walked.theta);
+}
+
+double recordedPitchError(const std::vector<FaultConfig>& faults, double t) {
+  const FaultConfig* f = activeFault(faults, "camera_pitch_error", t);
+  return f ? f->pitch_deg * kDeg : 0.0;
+}
+
+bool frameDropped(const std::vector<FaultConfig>& faults, double t, std::mt19937& rng) {
+  const FaultConfig* f = activeFault(faults, "frame_drop", t);
+  return f && std::uniform_real_distribution<double>(0.0, 1.0)(rng) < f->drop_fraction;
 }
 
 double exposureTimeAt(const SensorConfig& sensor, const std::vector<FaultConfig>& faults,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,17 @@ void validateFault(const FaultConfig& fault, size_t index);
 /// The first fault of `kind` active at t_s (start_s <= t_s < end_s), or null.
 const FaultConfig* activeFault(const std::vector<FaultConfig>& faults, const std::string& kind,
                                double t_s);
+
+/// The odometry step recorded for `walked` (the true robot-frame motion of a frame) ending at
+/// t_s: scaled by an active odometry_scale fault's `scale`, translation and rotation alike.
+Pose2 recordedOdometryStep(const std::vector<FaultConfig>& faults, const Pose2& walked, double t_s);
+
+/// The error (rad) a camera_pitch_error fault adds to the recorded camera pitch at t_s.
+double recordedPitchError(const std::vector<FaultConfig>& faults, double t_s);
+
+/// Whether the frame at t_s is left out of the recording by a frame_drop fault (one draw from
+/// rng per frame inside the fault's window, none outside it).
+bool frameDropped(const std::vector<FaultConfig>& faults, double t_s, std::mt19937& rng);
 
 /// The exposure time (ms) at t_s: a motion_blur fault's instead of the sensor's.
 double exposureTimeAt(const SensorConfig& sensor, const std::vector<FaultConfig>& faults,

@@ -104,7 +104,8 @@ std::vector<CameraResources> makeCameraResources(const RenderJob& job) {
 }
 
 /// The recorded camera pose (frames.csv cam_*): the rendered one, or during a camera_pose_delay
-/// fault the pose the same camera had delay_ms earlier; then the scenario's calibration error.
+/// fault the pose the same camera had delay_ms earlier; then the scenario's calibration error
+/// and a camera_pitch_error fault's.
 Pose3 recordedPose(const Scenario& sc, const Trajectory& trajectory, const Pose3& mount,
                    const Pose3& rendered, double t, std::mt19937& noise) {
   Pose3 pose = rendered;
@@ -112,6 +113,7 @@ Pose3 recordedPose(const Scenario& sc, const Trajectory& trajectory, const Pose3
     const double then = std::max(0.0, t - 1e-3 * delay->delay_ms);
     pose = renderedCameraPose(mount, trajectory.at(then), then, sc);
   }
+  pose.pitch += recordedPitchError(sc.faults, t);
   return recordedCameraPose(pose, sc.camera_pose_error, noise);
 }
 
@@ -166,6 +168,7 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
   const MovingObjects movers(sc, job.field);
   const VisibilityCounter visibility(job.field);
   std::mt19937 pose_noise(sc.seed * 19u + 1u);
+  std::mt19937 frame_drops(sc.seed * 23u + 5u);
   const double own_height = job.mount.z / 0.86;  // NAO: camera at 86% of the robot's height
   const double others_height =
       sc.scene.robot_height_m > 0.0 ? sc.scene.robot_height_m : defaultRobotHeight(job.field);
@@ -192,6 +195,18 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
     CameraResources& rig = cameras[static_cast<size_t>(i) % cameras.size()];
     CameraModel& camera = rig.camera;
     const Pose3 cam_pose = renderedCameraPose(rig.spec.mount, state, t, sc);
+    // Odometry, recorded camera pose and truth go on through frames a frame_drop fault leaves
+    // out (their noise too), so the recorded frames are those of the run without the fault.
+    if (i > 0)
+      odometry.update(recordedOdometryStep(sc.faults, trajectory.walkedMotion(t_prev, t), t));
+    t_prev = t;
+    const Pose3 recorded_pose =
+        recordedPose(sc, trajectory, rig.spec.mount, cam_pose, t, pose_noise);
+    rec.ground_truth.push_back({t_us, state.field_T_robot});
+    if (frameDropped(sc.faults, t, frame_drops)) {
+      if (progress) progress(i + 1, sc.frames);
+      continue;
+    }
     camera.setPose(cam_pose);
     const FrameView view = makeView(state.field_T_robot, cam_pose);
     SceneObjects objects = statics;
@@ -215,8 +230,6 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
     const auto visible =
         visibility.count(t_us, state.field_T_robot, camera, view, rig.rays, buffers);
     rec.visible.insert(rec.visible.end(), visible.begin(), visible.end());
-    if (i > 0) odometry.update(trajectory.walkedMotion(t_prev, t));
-    t_prev = t;
     FrameRecord frame;
     frame.image = name;
     frame.t_us = t_us;
@@ -227,9 +240,8 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
       frame.odometry = odometry.pose();
     }
     frame.camera_id = rig.spec.id;
-    frame.robot_T_camera = recordedPose(sc, trajectory, rig.spec.mount, cam_pose, t, pose_noise);
+    frame.robot_T_camera = recorded_pose;
     rec.frames.push_back(frame);
-    rec.ground_truth.push_back({t_us, state.field_T_robot});
     if (progress) progress(i + 1, sc.frames);
   }
   for (const TrajectoryEvent& e : trajectory.events()) {

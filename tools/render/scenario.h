@@ -146,6 +146,9 @@ struct FaultConfig {
   /// motion_blur: exposure_time_ms instead of the sensor's.
   /// light_change: the light's brightness and colour change (ramped in and out).
   /// camera_pose_delay: frames.csv cam_* is the camera pose of delay_ms earlier.
+  /// odometry_scale: odometry reports `scale` times the walked motion (steps, turns).
+  /// camera_pitch_error: frames.csv cam_pitch is off by pitch_deg (a miscalibrated joint).
+  /// frame_drop: a random drop_fraction of the frames is not recorded (no image, no row).
   std::string kind;
   double start_s = 0.0, end_s = 1.0;
   int robots = 3;            ///< robots_in_view: how many
@@ -157,6 +160,9 @@ struct FaultConfig {
   double color_temperature_k = 3000.0;  ///< light_change: light colour meanwhile
   double ramp_s = 0.2;                  ///< light_change: from start_s in, and out ending at end_s
   double delay_ms = 100.0;              ///< camera_pose_delay
+  double scale = 1.3;                   ///< odometry_scale: factor on every odometry step
+  double pitch_deg = 2.0;               ///< camera_pitch_error: added to the recorded pitch
+  double drop_fraction = 0.5;           ///< frame_drop: share of the frames not recorded
 };
 
 struct HintConfig {

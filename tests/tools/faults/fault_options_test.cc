@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
@@ -90,7 +91,8 @@ TEST(FaultOptions, RobotsStandInFrontOfTheCamera) {
 }
 
 /// A 160x120 nao-top render of 20 frames (0.63 s of walking), with or without faults.
-Recording render(const std::string& name, const std::vector<FaultConfig>& faults) {
+Recording render(const std::string& name, const std::vector<FaultConfig>& faults,
+                 const OdometryConfig& odometry = {}) {
   RenderJob job;
   job.field = makeStandardField("spl");
   const CameraPreset preset = cameraPreset("nao-top");
@@ -105,6 +107,7 @@ Recording render(const std::string& name, const std::vector<FaultConfig>& faults
   job.scenario.seed = 5;
   job.scenario.sensor.image_format = "png";
   job.scenario.faults = faults;
+  job.scenario.odometry = odometry;
   job.out_dir = (fs::path(::testing::TempDir()) / ("houghloc_fault_options_" + name)).string();
   fs::remove_all(job.out_dir);
   renderRecording(job);
@@ -184,6 +187,53 @@ TEST(FaultOptions, EachFaultChangesOnlyItsWindow) {
   EXPECT_TRUE(contains(rows, "\n100000,200000,odometry_dropout\n")) << rows;
   EXPECT_TRUE(contains(rows, ",600000,motion_blur\n")) << rows;
   EXPECT_FALSE(fs::exists(fs::path(clean.folder) / "truth" / "faults.csv"));
+}
+
+TEST(FaultOptions, OdometryScalePitchErrorAndDroppedFramesChangeOnlyTheirWindow) {
+  // Frames [3, 6) odometry x1.3, [6, 9) camera pitch +2 deg, [12, 18) half the frames dropped.
+  FaultConfig scale = fault("odometry_scale", 3, 6), pitch = fault("camera_pitch_error", 6, 9);
+  FaultConfig drop = fault("frame_drop", 12, 18);
+  // Odometry without noise, bias or slips, so that a step's scale shows exactly.
+  const OdometryConfig exact{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.6, 0.4};
+  const Recording clean = render("clean_exact_odometry", {}, exact);
+  const Recording faulty = render("scaled_pitched_dropped", {scale, pitch, drop}, exact);
+  std::map<std::int64_t, const FrameRecord*> recorded;
+  for (const FrameRecord& f : faulty.frames) recorded[f.t_us] = &f;
+  EXPECT_EQ(faulty.ground_truth.size(), 20u) << "truth goes on through dropped frames";
+  int dropped = 0;
+  double scaled_walk = 0.0, clean_walk = 0.0;
+  for (int i = 0; i < 20; ++i) {
+    SCOPED_TRACE("frame " + std::to_string(i));
+    const FrameRecord& c = clean.frames[i];
+    const auto it = recorded.find(c.t_us);
+    if (it == recorded.end()) {
+      EXPECT_TRUE(i >= 12 && i < 18) << "dropped outside the frame_drop window";
+      ++dropped;
+      continue;
+    }
+    const FrameRecord& f = *it->second;
+    EXPECT_EQ(fileBytes(fs::path(faulty.folder) / f.image),
+              fileBytes(fs::path(clean.folder) / c.image));
+    ASSERT_TRUE(f.odometry && c.odometry);
+    if (i >= 3 && i < 6) {
+      const FrameRecord& fp = faulty.frames[i - 1];
+      const FrameRecord& cp = clean.frames[i - 1];
+      const Pose2 f_step = fp.odometry->inverse() * *f.odometry;
+      const Pose2 c_step = cp.odometry->inverse() * *c.odometry;
+      scaled_walk += std::hypot(f_step.x, f_step.y);
+      clean_walk += std::hypot(c_step.x, c_step.y);
+    }
+    if (i < 3) {
+      EXPECT_EQ(f.odometry->x, c.odometry->x);
+    }
+    const double pitch_error = i >= 6 && i < 9 ? 2.0 * M_PI / 180.0 : 0.0;
+    EXPECT_NEAR(f.robot_T_camera.pitch, c.robot_T_camera.pitch + pitch_error, 1e-9);
+    EXPECT_NEAR(f.robot_T_camera.yaw, c.robot_T_camera.yaw, 1e-9);
+  }
+  ASSERT_GT(clean_walk, 0.0);
+  EXPECT_NEAR(scaled_walk / clean_walk, 1.3, 1e-9);
+  EXPECT_GT(dropped, 0);
+  EXPECT_LT(dropped, 6);
 }
 
 }  // namespace

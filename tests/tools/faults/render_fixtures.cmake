@@ -4,7 +4,8 @@
 # to 7 s (docs/reliability.md "Fault injection").
 include(${CMAKE_CURRENT_LIST_DIR}/../../../cmake/RenderFixtureList.cmake)
 set(fixtures)
-foreach(name clean odometry_dropout robots_in_view motion_blur light_change camera_pose_delay)
+foreach(name clean odometry_dropout robots_in_view motion_blur light_change camera_pose_delay
+    odometry_scale camera_pitch_error frame_drop)
   list(APPEND fixtures "${name}|--scenario ${SCENARIO_DIR}/${name}.yaml")
 endforeach()
 render_fixture_list(300 ${fixtures})

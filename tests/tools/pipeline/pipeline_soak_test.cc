@@ -6,19 +6,15 @@
 // time of the last 1 000 frames is within 1.25x of the first 1 000 (no state that grows and
 // slows every step down). Release only (label slow).
 #include <gtest/gtest.h>
-#include <time.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 #include <vector>
 
-#include "tools/pipeline/localization_pipeline.h"
-#include "tools/recording/recording.h"
+#include "tests/tools/pipeline/soak_support.h"
 #include "vision/image_conversion.h"
 
 namespace houghloc {
@@ -27,70 +23,17 @@ namespace {
 constexpr int kFrames = 20000;
 constexpr int kWindow = 1000;
 
-/// Resident set size of this process (MB), from /proc/self/statm.
-double residentMegabytes() {
-  std::ifstream statm("/proc/self/statm");
-  long pages_total = 0, pages_resident = 0;
-  statm >> pages_total >> pages_resident;
-  return static_cast<double>(pages_resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1e6;
-}
-
-double threadCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-/// A recorded frame with its image held in memory as YUYV (as a NAO delivers it, and half the
-/// bytes of BGR), so the loop measures the pipeline, not PNG decoding.
-struct LoadedFrame {
-  FrameRecord record;
-  cv::Mat yuyv;
-};
-
-std::vector<LoadedFrame> loadFrames(const Recording& recording) {
-  std::vector<LoadedFrame> frames;
+/// A recording's images held in memory as YUYV (as a NAO delivers them, and half the bytes of
+/// BGR), so the loop measures the pipeline, not image decoding.
+std::vector<cv::Mat> loadImages(const Recording& recording) {
+  std::vector<cv::Mat> images;
   for (const FrameRecord& record : recording.frames) {
     const cv::Mat bgr = cv::imread(recording.folder + "/" + record.image, cv::IMREAD_COLOR);
     if (bgr.empty()) throw std::runtime_error("cannot read " + record.image);
-    frames.push_back({record, bgrToYuyv(bgr)});
+    images.push_back(bgrToYuyv(bgr));
   }
-  return frames;
+  return images;
 }
-
-/// Plays the loops back to back as one run: times continue, and odometry continues from where
-/// the previous loop ended (the robot is carried to the loop's start pose, an unannounced
-/// kidnap to the localizer).
-class LoopedRun {
- public:
-  explicit LoopedRun(std::vector<std::vector<LoadedFrame>> loops) : loops_(std::move(loops)) {}
-
-  /// The frame and image of step n (0, 1, 2, ... in order).
-  std::pair<PipelineFrame, const cv::Mat*> step() {
-    const std::vector<LoadedFrame>& loop = loops_[loop_index_ % loops_.size()];
-    const LoadedFrame& loaded = loop[frame_index_];
-    const Pose2 start_inverse = loop.front().record.odometry.value().inverse();
-    PipelineFrame frame;
-    frame.t_us = t_offset_us_ + (loaded.record.t_us - loop.front().record.t_us);
-    frame.camera_id = loaded.record.camera_id;
-    frame.robot_T_camera = loaded.record.robot_T_camera;
-    frame.odometry = odometry_offset_ * (start_inverse * loaded.record.odometry.value());
-    if (++frame_index_ == static_cast<int>(loop.size())) {
-      frame_index_ = 0;
-      ++loop_index_;
-      t_offset_us_ = frame.t_us + 33333;
-      odometry_offset_ = *frame.odometry;
-    }
-    return {frame, &loaded.yuyv};
-  }
-
- private:
-  std::vector<std::vector<LoadedFrame>> loops_;
-  std::size_t loop_index_ = 0;
-  int frame_index_ = 0;
-  std::int64_t t_offset_us_ = 0;
-  Pose2 odometry_offset_;
-};
 
 TEST(PipelineSoak, TwentyThousandFramesKeepMemoryHypothesesAndTimeBounded) {
   std::vector<Recording> recordings;
@@ -99,8 +42,12 @@ TEST(PipelineSoak, TwentyThousandFramesKeepMemoryHypothesesAndTimeBounded) {
   }
   const Recording& first = recordings.front();
   ASSERT_TRUE(first.field && first.camera);
-  std::vector<std::vector<LoadedFrame>> loops;
-  for (const Recording& recording : recordings) loops.push_back(loadFrames(recording));
+  std::vector<std::vector<cv::Mat>> images;
+  std::vector<std::vector<FrameRecord>> loops;
+  for (const Recording& recording : recordings) {
+    images.push_back(loadImages(recording));
+    loops.push_back(recording.frames);
+  }
 
   PipelineConfig config;
   LocalizationPipeline pipeline(PipelineMode::kFull, std::make_shared<FieldModel>(*first.field),
@@ -113,9 +60,9 @@ TEST(PipelineSoak, TwentyThousandFramesKeepMemoryHypothesesAndTimeBounded) {
   std::size_t most_hypotheses = 0;
   int frames_with_points = 0;
   for (int n = 0; n < kFrames; ++n) {
-    const auto [frame, image] = run.step();
+    const LoopedStep step = run.step();
     const double cpu_before = threadCpuSeconds();
-    const PipelineResult result = pipeline.process(frame, *image);
+    const PipelineResult result = pipeline.process(step.frame, images[step.loop][step.index]);
     const double cpu = threadCpuSeconds() - cpu_before;
     if (n < kWindow) cpu_first += cpu;
     if (n >= kFrames - kWindow) cpu_last += cpu;
