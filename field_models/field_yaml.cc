@@ -74,7 +74,9 @@ MarkShape readShape(double value, const std::string& source, const std::string& 
 /// "<file>(<line>): <reason>" into cv::Exception::func, so both fields are searched.
 [[noreturn]] void rethrowParseError(const cv::Exception& e, const std::string& source,
                                     int line_offset) {
-  static const std::regex kLineReason(R"(\((\d+)\): (.*))");
+  // OpenCV writes "(<line>): <reason>"; the digit count is bounded because the reason may quote
+  // the file, whose own "(<digits>): " must not reach stoi (tests/fuzz field_yaml).
+  static const std::regex kLineReason(R"(\((\d{1,9})\): (.*))");
   std::smatch match;
   for (const std::string& text : {e.func, e.err}) {
     if (std::regex_search(text, match, kLineReason)) {

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "field_models/distance_grid.h"
@@ -51,15 +52,11 @@ class MapSignature {
   /// (a superset of the samples inside it).
   template <typename F>
   void forEachEvidenceSample(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, F&& f) const {
-    const int c0 = std::max(0, static_cast<int>((lo.x() - bucket_origin_.x()) / kEvidenceBucketM));
-    const int r0 = std::max(0, static_cast<int>((lo.y() - bucket_origin_.y()) / kEvidenceBucketM));
-    const int c1 = std::min(bucket_cols_ - 1,
-                            static_cast<int>((hi.x() - bucket_origin_.x()) / kEvidenceBucketM));
-    const int r1 = std::min(bucket_rows_ - 1,
-                            static_cast<int>((hi.y() - bucket_origin_.y()) / kEvidenceBucketM));
-    for (int r = r0; r <= r1; ++r) {
-      const int begin = bucket_start_[r * bucket_cols_ + c0];
-      const int end = bucket_start_[r * bucket_cols_ + c1 + 1];
+    const BucketRange cols = bucketRange(lo.x(), hi.x(), bucket_origin_.x(), bucket_cols_);
+    const BucketRange rows = bucketRange(lo.y(), hi.y(), bucket_origin_.y(), bucket_rows_);
+    for (int r = rows.first; r <= rows.last; ++r) {
+      const int begin = bucket_start_[r * bucket_cols_ + cols.first];
+      const int end = bucket_start_[r * bucket_cols_ + cols.last + 1];
       for (int i = begin; i < end; ++i) f(evidence_[i]);
     }
   }
@@ -71,6 +68,17 @@ class MapSignature {
   const std::vector<Arc2>& circles() const { return circles_; }
 
  private:
+  struct BucketRange {
+    int first = 0, last = -1;  ///< buckets first..last; empty when first > last
+  };
+  /// The buckets along one axis that [lo, hi] overlaps, clamped to the `count` buckets from
+  /// `origin`; empty when the interval misses them or is NaN (a pose far off the field).
+  static BucketRange bucketRange(double lo, double hi, double origin, int count) {
+    const double first = std::floor((lo - origin) / kEvidenceBucketM);
+    const double last = std::floor((hi - origin) / kEvidenceBucketM);
+    if (!(first <= last) || last < 0.0 || first >= count) return {};
+    return {static_cast<int>(std::max(first, 0.0)), static_cast<int>(std::min(last, count - 1.0))};
+  }
   void bucketEvidence(const std::vector<Eigen::Vector2d>& samples);
 
   FieldModel field_;

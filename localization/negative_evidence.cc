@@ -167,7 +167,7 @@ double VisibilityEvidence::unseenLineLength(const Pose2& field_T_robot,
   map.forEachEvidenceSample(lo, hi, [&](const Eigen::Vector2d& p) {
     const double gx = (c * p.x() - s * p.y() + robot_T_field.x - origin_.x()) * inv;
     const double gy = (s * p.x() + c * p.y() + robot_T_field.y - origin_.y()) * inv;
-    if (gx < 0.0 || gy < 0.0 || gx >= cols_ || gy >= rows_) return;
+    if (!(gx >= 0.0 && gy >= 0.0 && gx < cols_ && gy < rows_)) return;  // outside, or NaN
     const unsigned char v = cells_[static_cast<int>(gy) * cols_ + static_cast<int>(gx)];
     unseen += (v & 6) == 2;  // inside with margin, no point near
   });

@@ -197,6 +197,38 @@ TEST_P(FastPathsTest, ScoringAlongALineEqualsScoringEachPose) {
   EXPECT_GT(on_lines, 10);  // some positions put many points on lines
 }
 
+// The bucketed visit is a superset of the samples inside the box, on the field, beside it,
+// far off it, and for a NaN box (poses far off the field reach it: tests/fuzz localizer).
+TEST_P(FastPathsTest, EvidenceBucketsVisitEverySampleInTheBoxAndNoneOfAMissingBox) {
+  const MapSignature map(makeStandardField(GetParam()));
+  const auto& samples = map.evidenceSamples();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> corner(-60.0, 60.0), size(0.0, 20.0);
+  for (int i = 0; i < 3000; ++i) {
+    const Eigen::Vector2d lo(corner(rng), corner(rng));
+    const Eigen::Vector2d hi = lo + Eigen::Vector2d(size(rng), size(rng));
+    std::size_t inside = 0, visited_inside = 0, visited = 0;
+    for (const auto& p : samples)
+      inside += (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
+    map.forEachEvidenceSample(lo, hi, [&](const Eigen::Vector2d& p) {
+      ++visited;
+      visited_inside += (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
+    });
+    ASSERT_EQ(visited_inside, inside) << lo.transpose() << " .. " << hi.transpose();
+    ASSERT_LE(visited, samples.size());
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  int visited = 0;
+  map.forEachEvidenceSample(Eigen::Vector2d(nan, 0.0), Eigen::Vector2d(1.0, 1.0),
+                            [&](const Eigen::Vector2d&) { ++visited; });
+  map.forEachEvidenceSample(Eigen::Vector2d(-1e300, -1e300), Eigen::Vector2d(-1e299, -1e299),
+                            [&](const Eigen::Vector2d&) { ++visited; });
+  EXPECT_EQ(visited, 0);
+  map.forEachEvidenceSample(Eigen::Vector2d(-1e300, -1e300), Eigen::Vector2d(1e300, 1e300),
+                            [&](const Eigen::Vector2d&) { ++visited; });
+  EXPECT_EQ(visited, static_cast<int>(samples.size()));
+}
+
 INSTANTIATE_TEST_SUITE_P(Fields, FastPathsTest, ::testing::Values("spl", "msl"));
 
 TEST(FastHoughTest, AddPointsEqualsAddPointOneByOne) {

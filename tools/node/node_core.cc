@@ -23,6 +23,12 @@ void append(std::string& message, const std::string& part) {
   message += (message.empty() ? "" : "; ") + part;
 }
 
+// No clock gives a time outside [0, 2^53) us (285 years). Inside it, every difference of two
+// times fits in int64 and every time converts to double exactly, so the node's time arithmetic
+// needs no overflow check of its own.
+constexpr std::int64_t kUtimeLimit = std::int64_t{1} << 53;
+bool plausibleUtime(std::int64_t utime) { return utime >= 0 && utime < kUtimeLimit; }
+
 }  // namespace
 
 NodeCore::NodeCore(std::shared_ptr<const FieldModel> field, const PipelineConfig& config,
@@ -39,13 +45,21 @@ void NodeCore::drop(DropReason reason, const std::string& message) {
   for (const auto& [id, t] : newest_image_utime_) problem_utime_ = std::max(problem_utime_, t);
 }
 
+bool NodeCore::refuseTime(std::int64_t utime, const std::string& what) {
+  if (plausibleUtime(utime)) return false;
+  drop(DropReason::kMalformed, what + " with utime " + std::to_string(utime) + " out of range");
+  return true;
+}
+
 void NodeCore::onOdometry(const odometry_t& msg) {
+  if (refuseTime(msg.utime, "odometry")) return;
   const std::optional<Pose2> odometry = odometryFromMessage(msg);
   if (!odometry) return drop(DropReason::kMalformed, "odometry with NaN or infinity");
   odometry_.push(msg.utime, *odometry);
 }
 
 void NodeCore::onCameraPose(const camera_pose_t& msg) {
+  if (refuseTime(msg.utime, "camera '" + msg.camera_id + "': pose")) return;
   const std::optional<Pose3> pose = cameraPoseFromMessage(msg);
   if (!pose)
     return drop(DropReason::kMalformed, "camera '" + msg.camera_id + "': pose with NaN or inf");
@@ -53,6 +67,7 @@ void NodeCore::onCameraPose(const camera_pose_t& msg) {
 }
 
 void NodeCore::onHint(const localization_hint_t& msg) {
+  if (refuseTime(msg.utime, "hint")) return;
   try {
     pipeline_.queueHint(hintFromMessage(msg));
   } catch (const MessageError& e) {
@@ -66,6 +81,7 @@ std::optional<NodeOutput> NodeCore::onImage(const image_t& msg) {
     drop(DropReason::kMalformed, "image of unknown camera '" + msg.camera_id + "'");
     return std::nullopt;
   }
+  if (refuseTime(msg.utime, "camera '" + msg.camera_id + "': image")) return std::nullopt;
   const auto last = last_image_utime_.find(msg.camera_id);
   if (last != last_image_utime_.end() && msg.utime <= last->second) {
     if (last->second - msg.utime <= timing_.restart_gap_us) {

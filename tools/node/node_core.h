@@ -82,6 +82,8 @@ class NodeCore {
 
  private:
   void drop(DropReason reason, const std::string& message);
+  /// Drops (malformed) a message whose utime no clock gives, naming it by `what`; true if so.
+  bool refuseTime(std::int64_t utime, const std::string& what);
   /// Odometry, camera poses and images of other cameras farther than max_stream_gap_us from
   /// the newest image, as text for the status message.
   std::string streamGaps() const;

@@ -140,5 +140,29 @@ TEST_F(NodeCoreTest, CountsEveryRefusalAndKeepsGoing) {
   EXPECT_EQ(core->status().dropped_malformed, 5);
 }
 
+// A time no clock gives (the node fuzz target's int64 extremes overflowed the gap arithmetic
+// of the status message) is refused on every input; the streams keep their sane times.
+TEST_F(NodeCoreTest, RefusesTimesNoClockGives) {
+  auto core = makeCore();
+  const FrameRecord& f = rec_.frames[0];
+  const std::int64_t extremes[] = {std::numeric_limits<std::int64_t>::min(), -1,
+                                   std::int64_t{1} << 53, std::numeric_limits<std::int64_t>::max()};
+  for (const std::int64_t t : extremes) {
+    core->onOdometry(odometryToMessage(t, f.odometry.value()));
+    core->onCameraPose(cameraPoseToMessage(t, f.camera_id, f.robot_T_camera));
+    localization_hint_t hint{};
+    hint.utime = t;
+    core->onHint(hint);
+    EXPECT_FALSE(core->onImage(imageToMessage(cv::Mat(10, 10, CV_8UC3), 0, t, f.camera_id)));
+  }
+  EXPECT_EQ(core->drops().malformed, 16);
+  EXPECT_NE(core->status().message.find("out of range"), std::string::npos);
+  // The refused times left no trace: the good frame goes through and the status is finite.
+  core->onOdometry(odometryToMessage(f.t_us, f.odometry.value()));
+  core->onCameraPose(cameraPoseToMessage(f.t_us, f.camera_id, f.robot_T_camera));
+  EXPECT_TRUE(core->onImage(imageMessage(f, 0)).has_value());
+  EXPECT_EQ(core->status().message.find("apart"), std::string::npos) << core->status().message;
+}
+
 }  // namespace
 }  // namespace houghloc
