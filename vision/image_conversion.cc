@@ -7,6 +7,18 @@
 
 namespace houghloc {
 
+namespace {
+
+// cvtColor reallocates `bgr` only when its size or type differs.
+void convertYuyv(const cv::Mat& yuyv, cv::Mat& bgr) {
+  if (yuyv.type() != CV_8UC2 || yuyv.cols % 2 != 0) {
+    throw std::invalid_argument("YUYV image must be CV_8UC2 with an even width");
+  }
+  cv::cvtColor(yuyv, bgr, cv::COLOR_YUV2BGR_YUYV);
+}
+
+}  // namespace
+
 PixelFormat pixelFormatOf(const cv::Mat& image) {
   if (image.type() == CV_8UC3) return PixelFormat::kBgr8;
   if (image.type() == CV_8UC2) return PixelFormat::kYuyv;
@@ -15,11 +27,8 @@ PixelFormat pixelFormatOf(const cv::Mat& image) {
 }
 
 cv::Mat yuyvToBgr(const cv::Mat& yuyv) {
-  if (yuyv.type() != CV_8UC2 || yuyv.cols % 2 != 0) {
-    throw std::invalid_argument("YUYV image must be CV_8UC2 with an even width");
-  }
   cv::Mat bgr;
-  cv::cvtColor(yuyv, bgr, cv::COLOR_YUV2BGR_YUYV);
+  convertYuyv(yuyv, bgr);
   return bgr;
 }
 
@@ -51,8 +60,10 @@ cv::Mat bgrToYuyv(const cv::Mat& bgr) {
   return yuyv;
 }
 
-cv::Mat toBgr(const cv::Mat& image) {
-  return pixelFormatOf(image) == PixelFormat::kBgr8 ? image : yuyvToBgr(image);
+cv::Mat toBgr(const cv::Mat& image, cv::Mat& buffer) {
+  if (pixelFormatOf(image) == PixelFormat::kBgr8) return image;
+  convertYuyv(image, buffer);
+  return buffer;
 }
 
 }  // namespace houghloc

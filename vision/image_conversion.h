@@ -17,7 +17,9 @@ cv::Mat yuyvToBgr(const cv::Mat& yuyv);
 /// BGR8 to YUYV (for tests and the node's simulated camera); width must be even.
 cv::Mat bgrToYuyv(const cv::Mat& bgr);
 
-/// The image as BGR8: a shallow copy for BGR8 input, a conversion for YUYV.
-cv::Mat toBgr(const cv::Mat& image);
+/// The image as BGR8: a shallow copy for BGR8 input; for YUYV a conversion into `buffer`, whose
+/// memory is reused while the size stays (a new 0.9 MB buffer per 640x480 frame costs the node
+/// page faults on every frame). The result shares memory with `buffer` or `image`.
+cv::Mat toBgr(const cv::Mat& image, cv::Mat& buffer);
 
 }  // namespace houghloc

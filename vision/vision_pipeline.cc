@@ -55,7 +55,7 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   VisionResult result;
   VisionDiagnostics& diag = result.diagnostics;
   result.ground.t_us = t_us;
-  const cv::Mat bgr = toBgr(image);
+  const cv::Mat bgr = toBgr(image, bgr_buffer_);
 
   // 1. Horizon from the (corrected) camera pose.
   const Pose3 pose = corrector_->corrected(robot_T_camera);

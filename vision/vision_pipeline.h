@@ -114,6 +114,7 @@ class VisionPipeline {
   std::shared_ptr<CameraPoseCorrector> corrector_;  ///< shared by sharePoseCorrection()
   FieldColor last_field_color_;  ///< this camera's last valid field colour (frame memory)
   int field_color_age_ = std::numeric_limits<int>::max() / 2;  ///< frames since it
+  cv::Mat bgr_buffer_;  ///< YUYV input converted, reused from frame to frame
 };
 
 }  // namespace houghloc

@@ -30,7 +30,23 @@ TEST(ImageConversion, YuyvRoundTripKeepsColours) {
 TEST(ImageConversion, RejectsOtherTypes) {
   EXPECT_THROW(pixelFormatOf(cv::Mat(4, 4, CV_8UC1)), std::invalid_argument);
   EXPECT_THROW(yuyvToBgr(cv::Mat(4, 5, CV_8UC2)), std::invalid_argument);
-  EXPECT_THROW(toBgr(cv::Mat(4, 4, CV_32FC3)), std::invalid_argument);
+  cv::Mat buffer;
+  EXPECT_THROW(toBgr(cv::Mat(4, 4, CV_32FC3), buffer), std::invalid_argument);
+  EXPECT_THROW(toBgr(cv::Mat(4, 5, CV_8UC2), buffer), std::invalid_argument);
+}
+
+TEST(ImageConversion, ToBgrConvertsYuyvIntoTheSameBufferAndPassesBgrThrough) {
+  cv::Mat bgr(48, 64, CV_8UC3);
+  cv::randu(bgr, cv::Scalar::all(0), cv::Scalar::all(255));
+  const cv::Mat yuyv = bgrToYuyv(bgr);
+  cv::Mat buffer;
+  const cv::Mat first = toBgr(yuyv, buffer);
+  const uchar* memory = buffer.data;
+  EXPECT_EQ(cv::norm(first, yuyvToBgr(yuyv), cv::NORM_INF), 0.0);
+  const cv::Mat second = toBgr(bgrToYuyv(255 - bgr), buffer);
+  EXPECT_EQ(second.data, memory);  // reused, not reallocated
+  EXPECT_EQ(cv::norm(second, yuyvToBgr(bgrToYuyv(255 - bgr)), cv::NORM_INF), 0.0);
+  EXPECT_EQ(toBgr(bgr, buffer).data, bgr.data);  // BGR8: the image itself
 }
 
 }  // namespace

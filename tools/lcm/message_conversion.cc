@@ -47,7 +47,8 @@ cv::Mat rowsFromMessage(const image_t& msg, int type, int bytes_per_pixel) {
                        std::to_string(needed));
   const cv::Mat view(msg.height, msg.width, type, const_cast<std::uint8_t*>(msg.data.data()),
                      static_cast<std::size_t>(msg.row_stride));
-  return view.clone();
+  // Tight rows (every camera's) go to the vision without a copy; padded rows are copied tight.
+  return msg.row_stride == row_bytes ? view : view.clone();
 }
 
 }  // namespace

@@ -24,9 +24,10 @@ class MessageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// image_t -> the layouts VisionPipeline accepts: BGR8 as CV_8UC3, YUYV as CV_8UC2 (both
-/// copied into tight rows), MJPEG decoded to BGR8. Throws MessageError on sizes that do not
-/// match the data, an odd YUYV width or an undecodable JPEG.
+/// image_t -> the layouts VisionPipeline accepts: BGR8 as CV_8UC3 and YUYV as CV_8UC2, in tight
+/// rows (a view of msg.data when its rows are tight: valid while msg lives and its data is not
+/// resized, clone() to keep it; else a copy), MJPEG decoded to BGR8. Throws MessageError on sizes
+/// that do not match the data, an odd YUYV width or an undecodable JPEG.
 cv::Mat imageFromMessage(const image_t& msg);
 
 /// A BGR8 image as image_t in `pixel_format` (image_t::PIXEL_FORMAT_*); MJPEG at JPEG quality 90.

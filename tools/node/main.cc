@@ -6,6 +6,7 @@
 #include <iostream>
 #include <lcm/lcm-cpp.hpp>
 #include <memory>
+#include <opencv2/core/utility.hpp>
 #include <optional>
 #include <string>
 #include <thread>
@@ -59,6 +60,9 @@ void restorePose(GaussianPose pose, const NodeOptions& o, const PoseFileConfig& 
 }
 
 int run(const NodeOptions& o, NodeLog& log, const std::atomic<bool>& stop) {
+  // One processing thread, no OpenCV worker pool: its threads spin (sched_yield) after every
+  // parallel YUYV conversion, which cost the node about a tenth of its CPU (docs/node.md).
+  cv::setNumThreads(0);
   if (o.field.empty() == o.standard.empty())
     throw std::runtime_error("give --field FILE or --standard NAME");
   const FieldModel field = loadRunField(o.field, o.standard);

@@ -21,9 +21,11 @@ cv::Mat randomBgr(int width, int height, unsigned seed) {
 
 TEST(MessageConversion, Bgr8IsExact) {
   const cv::Mat bgr = randomBgr(64, 48, 1);
-  const cv::Mat out = imageFromMessage(imageToMessage(bgr, image_t::PIXEL_FORMAT_BGR8, 5, "top"));
+  const image_t msg = imageToMessage(bgr, image_t::PIXEL_FORMAT_BGR8, 5, "top");
+  const cv::Mat out = imageFromMessage(msg);
   ASSERT_EQ(out.type(), CV_8UC3);
   EXPECT_EQ(cv::norm(out, bgr, cv::NORM_INF), 0.0);
+  EXPECT_EQ(out.data, msg.data.data());  // tight rows: a view, no copy
 }
 
 TEST(MessageConversion, YuyvKeepsTheBytesOfBgrToYuyv) {
@@ -47,7 +49,9 @@ TEST(MessageConversion, RowStrideWithPaddingIsHonoured) {
   msg.data = padded;
   msg.size = static_cast<std::int32_t>(padded.size());
   msg.row_stride = 32;
-  EXPECT_EQ(cv::norm(imageFromMessage(msg), bgr, cv::NORM_INF), 0.0);
+  const cv::Mat out = imageFromMessage(msg);
+  EXPECT_EQ(cv::norm(out, bgr, cv::NORM_INF), 0.0);
+  EXPECT_TRUE(out.isContinuous());  // copied tight: the vision reads rows without the padding
 }
 
 TEST(MessageConversion, MjpegDecodesCloseToTheOriginal) {
