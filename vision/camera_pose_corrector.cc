@@ -44,9 +44,7 @@ Pose3 CameraPoseCorrector::corrected(const Pose3& recorded) const {
 void CameraPoseCorrector::reset() {
   last_map_inliers_ = 0;
   line_sigma_.setConstant(std::numeric_limits<double>::infinity());
-  estimate_.setZero();
   solution_.setZero();
-  runaway_ = false;
   runaway_frames_ = 0;
   applied_.setZero();
   sigma_.setConstant(std::numeric_limits<double>::infinity());
@@ -182,9 +180,9 @@ bool CameraPoseCorrector::solve() {
   // frame (16 ms per image after two minutes, tests/tools/node/node_soak_test).
   const int restart_every = std::max(1, config_.runaway_restart_solves);
   const bool restart =
-      runaway_ && (static_cast<int>(frames_.size()) <= config_.runaway_restart_frames ||
-                   runaway_frames_ % restart_every == 1);
-  Eigen::Vector2d c = restart ? Eigen::Vector2d::Zero() : runaway_ ? solution_ : estimate_;
+      runaway() && (static_cast<int>(frames_.size()) <= config_.runaway_restart_frames ||
+                    runaway_frames_ % restart_every == 1);
+  Eigen::Vector2d c = restart ? Eigen::Vector2d::Zero() : solution_;
   Eigen::Matrix2d information = Eigen::Matrix2d::Zero();
   Eigen::Matrix2d line_information = Eigen::Matrix2d::Zero();  ///< of the lines and arcs alone
   double chi2 = 0.0;
@@ -194,7 +192,7 @@ bool CameraPoseCorrector::solve() {
   // A runaway going on is not applied, so its frames need re-linearising only when it moved by
   // a fair part of its own uncertainty (it drifts with every frame, so loosely is it held).
   const double relinearize_rad =
-      runaway_ && !restart
+      runaway() && !restart
           ? std::clamp(0.1 * sigma_.maxCoeff(), config_.relinearize_rad, config_.max_correction_rad)
           : config_.relinearize_rad;
   for (int pass = 0; pass < 3; ++pass) {
@@ -246,13 +244,11 @@ bool CameraPoseCorrector::solve() {
     if ((c - start).cwiseAbs().maxCoeff() <= relinearize_rad) break;
   }
   const double limit = config_.max_correction_rad;
-  estimate_ = c.cwiseMax(-limit).cwiseMin(limit);
   // A solution at or beyond the limit is a runaway of the linearised steps on too little data:
   // the first segments of a walk with a 2 deg error once sent it to +4 deg, then to -4 deg, and
   // it stayed there, applied, for 3 s. It is not applied, and the next solve starts from 0
   // (see the start of this function).
-  runaway_ = (c.cwiseAbs().array() >= limit).any();
-  runaway_frames_ = runaway_ ? runaway_frames_ + 1 : 0;
+  runaway_frames_ = (c.cwiseAbs().array() >= limit).any() ? runaway_frames_ + 1 : 0;
   solution_ = c;
   // Covariance of the estimate; each frame's heading is a nuisance parameter, and sigmas from
   // a few spots' rms may be too small, so the residual chi^2 per degree of freedom scales it up.
@@ -342,10 +338,11 @@ bool CameraPoseCorrector::update(const std::vector<GroundSegment>& segments,
   }
   if (!solved) return false;
   const bool enough = static_cast<int>(frames_.size()) >= config_.min_frames;
+  const Eigen::Vector2d estimated = estimate();
   for (int k = 0; k < 2; ++k) {
-    const bool significant = std::abs(estimate_(k)) >= config_.significance_sigmas * sigma_(k) &&
-                             std::abs(estimate_(k)) >= config_.min_correction_rad;
-    applied_(k) = enough && significant && !runaway_ ? estimate_(k) : 0.0;
+    const bool significant = std::abs(estimated(k)) >= config_.significance_sigmas * sigma_(k) &&
+                             std::abs(estimated(k)) >= config_.min_correction_rad;
+    applied_(k) = enough && significant && !runaway() ? estimated(k) : 0.0;
   }
   return true;
 }

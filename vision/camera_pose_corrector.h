@@ -119,8 +119,11 @@ class CameraPoseCorrector {
   int lastMapInliers() const { return last_map_inliers_; }
   /// (roll, pitch) correction applied by corrected(), rad.
   const Eigen::Vector2d& correction() const { return applied_; }
-  /// The estimate before the min_frames / significance gates, rad.
-  const Eigen::Vector2d& estimate() const { return estimate_; }
+  /// The estimate before the min_frames / significance gates (the last solve's solution
+  /// clamped to max_correction_rad), rad.
+  Eigen::Vector2d estimate() const {
+    return solution_.cwiseMax(-config_.max_correction_rad).cwiseMin(config_.max_correction_rad);
+  }
   /// Standard deviation of estimate() (roll, pitch), rad; infinite before the first solve.
   const Eigen::Vector2d& estimateSigma() const { return sigma_; }
   void reset();
@@ -173,7 +176,7 @@ class CameraPoseCorrector {
   void linearize(Frame* frame, const Eigen::Vector2d& c) const;
   /// Sets the frame's kept sums (Frame::quadratic) after linearize().
   void cacheQuadratic(Frame* frame) const;
-  /// IRLS Gauss-Newton on the linearised frames from estimate_; false on a numerical breakdown.
+  /// IRLS Gauss-Newton on the linearised frames from solution_; false on a numerical breakdown.
   bool solve();
 
   /// The frame's map observation from the spots within range (every k-th of them).
@@ -184,9 +187,9 @@ class CameraPoseCorrector {
   std::shared_ptr<const FieldModel> field_;
   std::deque<Frame> frames_;
   int last_map_inliers_ = 0;
-  Eigen::Vector2d estimate_ = Eigen::Vector2d::Zero();
-  bool runaway_ = false;    ///< the last solve ended at max_correction_rad (estimate_ clamped)
-  int runaway_frames_ = 0;  ///< solves in a row that ended so
+  /// Solves in a row that ended at or beyond max_correction_rad (a runaway, not applied).
+  int runaway_frames_ = 0;
+  bool runaway() const { return runaway_frames_ > 0; }
   Eigen::Vector2d solution_ = Eigen::Vector2d::Zero();  ///< the last solve's, before clamping
   Eigen::Vector2d applied_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d sigma_ = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());

@@ -197,8 +197,9 @@ void renderRecording(const RenderJob& job, const RenderProgress& progress) {
     const Pose3 cam_pose = renderedCameraPose(rig.spec.mount, state, t, sc);
     // Odometry, recorded camera pose and truth go on through frames a frame_drop fault leaves
     // out (their noise too), so the recorded frames are those of the run without the fault.
-    if (i > 0)
+    if (i > 0) {
       odometry.update(recordedOdometryStep(sc.faults, trajectory.walkedMotion(t_prev, t), t));
+    }
     t_prev = t;
     const Pose3 recorded_pose =
         recordedPose(sc, trajectory, rig.spec.mount, cam_pose, t, pose_noise);

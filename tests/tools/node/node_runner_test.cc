@@ -9,6 +9,7 @@
 #include <sstream>
 #include <thread>
 
+#include "tests/tools/node/memq_node.h"
 #include "tests/tools/node/node_test_support.h"
 #include "tools/node/device_grabber.h"
 
@@ -18,24 +19,19 @@ namespace {
 /// A NodeRunner on its own thread and a test-side subscriber on the same memq:// LCM.
 class RunningNode {
  public:
-  RunningNode(NodeCore& core, const NodeRunnerOptions& options = {})
-      : lcm_("memq://"), runner_(lcm_, core, "", true, options) {
-    lcm_.subscribe("HYPOTHESES", &RunningNode::onHypotheses, this);
-    lcm_.subscribe("STATUS", &RunningNode::onStatus, this);
-    thread_ = std::thread([this] { runner_.run(stop_); });
+  RunningNode(NodeCore& core, const NodeRunnerOptions& options = {}) : node_(core, options) {
+    node_.lcm().subscribe("HYPOTHESES", &RunningNode::onHypotheses, this);
+    node_.lcm().subscribe("STATUS", &RunningNode::onStatus, this);
+    node_.start();
   }
-  ~RunningNode() { stop(); }
-  void stop() {
-    stop_ = true;
-    if (thread_.joinable()) thread_.join();
-  }
+  void stop() { node_.stop(); }
 
   template <typename T>
   void publish(const std::string& channel, const T& msg) {
-    lcm_.publish(channel, &msg);
+    node_.publish(channel, msg);
   }
   void publishRaw(const std::string& channel, const std::vector<std::uint8_t>& bytes) {
-    lcm_.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
+    node_.publishRaw(channel, bytes);
   }
   /// The HYPOTHESES of the image stamped `utime`, waiting up to 5 s.
   std::optional<pose_hypotheses_t> waitHypotheses(std::int64_t utime) {
@@ -49,7 +45,7 @@ class RunningNode {
     std::lock_guard<std::mutex> lock(mutex_);
     return statuses_;
   }
-  NodeRunner& runner() { return runner_; }
+  NodeRunner& runner() { return node_.runner(); }
 
  private:
   void onHypotheses(const lcm::ReceiveBuffer*, const std::string&, const pose_hypotheses_t* m) {
@@ -62,14 +58,11 @@ class RunningNode {
     statuses_.push_back(*m);
   }
 
-  lcm::LCM lcm_;
-  NodeRunner runner_;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
   std::mutex mutex_;
   std::condition_variable wake_;
   std::map<std::int64_t, pose_hypotheses_t> hypotheses_;
   std::vector<localizer_status_t> statuses_;
+  MemqNode node_;  ///< last: stopped before the members its handlers touch go
 };
 
 class NodeRunnerTest : public NodeFixture {
