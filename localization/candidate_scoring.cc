@@ -2,6 +2,7 @@
 // map, pruned by segment extents, and one kept per optimum of a coarse Gauss-Newton.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "localization/global_locate_state.h"
 
@@ -21,21 +22,49 @@ constexpr int kCoarseIterations = 6;
 void GlobalHoughLocalizer::scoreAndPrune(LocateState& s) const {
   std::vector<PoseHypothesis>& located = s.located;
   const std::size_t kept = static_cast<std::size_t>(kFirstRoundShare * config_.pruning.keep);
-  if (located.size() > kept) {
-    scoreCandidates(located, subsamplePoints(s.points, config_.prescore_points / 4), &s.evidence);
-    // Sort indices, not the structs; same order as a stable sort of the candidates.
-    std::vector<std::size_t> order(located.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return located[a].score > located[b].score;
-    });
-    std::vector<PoseHypothesis> best;
-    best.reserve(kept);
-    for (std::size_t k = 0; k < kept; ++k) best.push_back(std::move(located[order[k]]));
-    located.swap(best);
-  }
+  if (located.size() > kept) keepBestOfFirstRound(located, kept, s);
   scoreCandidates(located, s.few, &s.evidence);
   located = pruneCandidates(std::move(located), config_.pruning);
+}
+
+void GlobalHoughLocalizer::keepBestOfFirstRound(std::vector<PoseHypothesis>& located,
+                                                std::size_t kept, LocateState& s) const {
+  // The cheap round: the positive score on a few points for every candidate, the field-edge
+  // penalty only for those that can still be among the `kept` best. The penalty is >= 0 (as
+  // placeAlongLines assumes), so once a candidate's positive score is below the kept-th best
+  // total so far, neither it nor any weaker one can enter; the candidates kept, their order and
+  // their scores are those of scoring all (round two rescores them anyway).
+  const WeightedPoints points = subsamplePoints(s.points, config_.prescore_points / 4);
+  for (PoseHypothesis& c : located) {
+    const PoseScore score = scorePose(points, c.field_T_robot, map_.grid(), config_.scoring);
+    c.score = score.score;
+    c.inlier_share = score.inlier_share;
+  }
+  auto byScore = [&](std::size_t a, std::size_t b) { return located[a].score > located[b].score; };
+  std::vector<std::size_t> order(located.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), byScore);
+  std::vector<std::size_t> scored;
+  std::vector<double> best_totals;  // min-heap of the kept best totals so far
+  for (std::size_t i : order) {
+    PoseHypothesis& c = located[i];
+    if (best_totals.size() == kept && c.score < best_totals.front()) break;
+    c.score -= s.evidence.edgePenalty(c.field_T_robot, map_.field());
+    scored.push_back(i);
+    best_totals.push_back(c.score);
+    std::push_heap(best_totals.begin(), best_totals.end(), std::greater<double>());
+    if (best_totals.size() > kept) {
+      std::pop_heap(best_totals.begin(), best_totals.end(), std::greater<double>());
+      best_totals.pop_back();
+    }
+  }
+  // Same order as a stable sort of all candidates by total score: ties keep the input order.
+  std::sort(scored.begin(), scored.end());
+  std::stable_sort(scored.begin(), scored.end(), byScore);
+  std::vector<PoseHypothesis> best;
+  best.reserve(kept);
+  for (std::size_t k = 0; k < kept; ++k) best.push_back(std::move(located[scored[k]]));
+  located.swap(best);
 }
 
 void GlobalHoughLocalizer::converge(LocateState& s) const {

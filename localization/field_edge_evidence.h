@@ -37,9 +37,9 @@ class FieldEdgeEvidence {
   FieldEdgeEvidence() = default;
   FieldEdgeEvidence(const GroundPoints& frame, const FieldEdgeConfig& config);
 
-  bool empty() const { return samples_.empty(); }
+  bool empty() const { return range_.empty(); }
   double maxBestCost() const { return config_.max_best_cost; }
-  void clear() { samples_.clear(); }
+  void clear();
   /// Mean cost per sample in [0, 1]: 0 when every sample lies where the pose puts the carpet's
   /// edge (carpet = |x| <= half_length, |y| <= half_width, field frame), 1 when every one is
   /// clip_sigmas or more away.
@@ -48,13 +48,12 @@ class FieldEdgeEvidence {
   double penaltyMetres(const Pose2& field_T_robot, double half_length, double half_width) const;
 
  private:
-  struct Sample {
-    Eigen::Vector2d direction;  ///< unit, robot frame
-    double range_m = 0.0;
-    double inv_sigma = 0.0;  ///< 1 / (clip_sigmas * total sigma)
-  };
   FieldEdgeConfig config_;
-  std::vector<Sample> samples_;
+  // The samples, one array per quantity so that the per-sample costs form a loop the compiler
+  // vectorises (meanCost runs for every candidate pose of a frame).
+  std::vector<double> direction_x_, direction_y_;  ///< unit, robot frame
+  std::vector<double> range_;
+  std::vector<double> inv_sigma_;  ///< 1 / (clip_sigmas * total sigma)
 };
 
 }  // namespace houghloc

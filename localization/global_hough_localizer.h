@@ -75,6 +75,10 @@ class GlobalHoughLocalizer {
   /// Step 4 scoring, in two rounds: a quarter of the pre-score points ranks all candidates, the
   /// best few times `keep` are scored with all pre-score points, then pruned by segment extents.
   void scoreAndPrune(LocateState& s) const;
+  /// Its first round: keeps the `kept` best of many candidates (by positive score
+  /// on prescore_points / 4 points less the field-edge penalty), best first.
+  void keepBestOfFirstRound(std::vector<PoseHypothesis>& located, std::size_t kept,
+                            LocateState& s) const;
   /// Coarse Gauss-Newton of every pruned candidate on the pre-score points; keeps one of each
   /// group that converged to the same pose, best score first.
   void converge(LocateState& s) const;
