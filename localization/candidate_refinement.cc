@@ -107,7 +107,11 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
     const Pose2 pose(t.x(), t.y(), theta);
     // A position that stays below the floor even with the cheap part of its penalty cannot raise
     // `best` nor reach the final floor (the floor only rises): skip the costly unseen-line term.
-    const VisibilityEvidence::CheapTerms cheap = evidence.cheapTerms(pose, map_.field());
+    // The field edge alone (a part of that bound, cheaper than the green beyond the carpet)
+    // decides most of them.
+    const double edge = evidence.edgePenalty(pose, map_.field());
+    if (best > -1e300 && scores[i] - edge < floorOf(best)) continue;
+    const VisibilityEvidence::CheapTerms cheap = evidence.cheapTerms(pose, map_.field(), edge);
     if (best > -1e300 && scores[i] - cheap.bound < floorOf(best)) continue;
     scores[i] -= evidence.penalty(pose, map_, cheap);
     done[i] = 1;

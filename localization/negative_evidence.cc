@@ -222,10 +222,16 @@ double VisibilityEvidence::edgePenalty(const Pose2& field_T_robot, const FieldMo
 
 VisibilityEvidence::CheapTerms VisibilityEvidence::cheapTerms(const Pose2& field_T_robot,
                                                               const FieldModel& field) const {
+  return cheapTerms(field_T_robot, field, edgePenalty(field_T_robot, field));
+}
+
+VisibilityEvidence::CheapTerms VisibilityEvidence::cheapTerms(const Pose2& field_T_robot,
+                                                              const FieldModel& field,
+                                                              double edge) const {
   CheapTerms terms;
   if (empty_) return terms;
   terms.green_m2 = greenOutsideCarpet(field_T_robot, field);
-  terms.edge = edgePenalty(field_T_robot, field);
+  terms.edge = edge;
   terms.bound = density_ * config_.outside_weight * terms.green_m2 + terms.edge;
   return terms;
 }

@@ -53,6 +53,9 @@ class VisibilityEvidence {
     double green_m2 = 0.0, edge = 0.0, bound = 0.0;
   };
   CheapTerms cheapTerms(const Pose2& field_T_robot, const FieldModel& field) const;
+  /// The same, with `edge` = edgePenalty(field_T_robot, field) already computed (a caller can
+  /// first decide on the edge alone, a lower bound of `bound`).
+  CheapTerms cheapTerms(const Pose2& field_T_robot, const FieldModel& field, double edge) const;
   /// Penalty in point weight: density * (line_weight * unseen + outside_weight * green area)
   /// plus edgePenalty(); the second form takes the cheap terms already computed for the pose.
   double penalty(const Pose2& field_T_robot, const MapSignature& map) const;
