@@ -87,57 +87,14 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
   const double step = config_.line_scan_step_m;
   std::vector<double> s_values;
   for (double s = s_min; s <= s_max + 1e-9; s += step) s_values.push_back(s);
-  std::vector<double> scores =
+  const std::vector<double> scores =
       scoreAlongLine(few, theta, t0, u, s_values, map_.grid(), config_.scoring);
   if (scores.empty()) return {};
-  // Subtract the negative evidence lazily, best positive score first: the penalty is >= 0, so
-  // once a position's positive score is below the floor of the best total so far, neither it
-  // nor any later one can reach the floor.
-  std::vector<std::size_t> order(scores.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return scores[a] > scores[b]; });
-  const double tolerance = config_.line_scan_tolerance;
-  auto floorOf = [&](double b) { return b - tolerance * std::max(std::abs(b), 1.0); };
-  double best = -1e300;
-  std::vector<char> done(scores.size(), 0);
-  for (std::size_t i : order) {
-    if (best > -1e300 && scores[i] < floorOf(best)) break;
-    const Eigen::Vector2d t = t0 + s_values[i] * u;
-    const Pose2 pose(t.x(), t.y(), theta);
-    // A position that stays below the floor even with the cheap part of its penalty cannot raise
-    // `best` nor reach the final floor (the floor only rises): skip the costly unseen-line term.
-    // The field edge alone (a part of that bound, cheaper than the green beyond the carpet)
-    // decides most of them.
-    const double edge = evidence.edgePenalty(pose, map_.field());
-    if (best > -1e300 && scores[i] - edge < floorOf(best)) continue;
-    const VisibilityEvidence::CheapTerms cheap = evidence.cheapTerms(pose, map_.field(), edge);
-    if (best > -1e300 && scores[i] - cheap.bound < floorOf(best)) continue;
-    scores[i] -= evidence.penalty(pose, map_, cheap);
-    done[i] = 1;
-    best = std::max(best, scores[i]);
-  }
-  for (std::size_t i = 0; i < scores.size(); ++i) {
-    if (!done[i]) scores[i] = -1e300;  // below the floor
-  }
-  const double floor = floorOf(best);
-  struct Stretch {
-    double begin, end, top;
-  };
-  std::vector<Stretch> stretches;
-  for (std::size_t i = 0; i < scores.size(); ++i) {
-    if (scores[i] < floor) continue;
-    if (i > 0 && scores[i - 1] >= floor) {
-      stretches.back().end = s_values[i];
-      stretches.back().top = std::max(stretches.back().top, scores[i]);
-    } else {
-      stretches.push_back({s_values[i], s_values[i], scores[i]});
-    }
-  }
-  if (stretches.empty()) return {};
+  const AlongLineFit fit = fitAlongLine(candidate, s_values, scores, evidence);
+  if (!fit.found) return {};
+  const double begin = s_values[fit.first], end = s_values[fit.last];
   // One Gaussian per line (the paper's M = 1 case): centred on the span of all stretches where
   // the points fit, with a standard deviation along the lines covering that whole span.
-  const double begin = stretches.front().begin, end = stretches.back().end;
   const Eigen::Vector2d t = t0 + 0.5 * (begin + end) * u;
   PoseHypothesis h = candidate;
   const RefinementResult r =
@@ -154,10 +111,72 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
   h.covariance(2, 2) += config_.parallel_floor_rad * config_.parallel_floor_rad;
   h.rms_m = r.rms_m;
   finish(h, points, evidence);
-  // The score is that of the best stretch (the mean may sit between stretches).
-  h.score = std::max(h.score, stretches.front().top);
-  for (const Stretch& st : stretches) h.score = std::max(h.score, st.top);
+  // The score is that of the best position (the mean may sit between stretches).
+  h.score = std::max(h.score, fit.best);
   return {h};
+}
+
+GlobalHoughLocalizer::AlongLineFit GlobalHoughLocalizer::fitAlongLine(
+    const PoseHypothesis& candidate, const std::vector<double>& s_values,
+    const std::vector<double>& positive, const VisibilityEvidence& evidence) const {
+  // A position's score is its positive score less the negative evidence. Only three numbers of
+  // all positions matter: the best score, and the first and the last position within the
+  // tolerance of it (the span where the points fit). The penalty is >= 0, so a positive score
+  // bounds a position's score from above, and so does it less the cheap part of the penalty
+  // (field edge, then green beyond the carpet); the costly unseen-line term is paid only where
+  // these bounds cannot decide.
+  const Eigen::Vector2d u = candidate.line_direction;
+  const Eigen::Vector2d t0 = candidate.field_T_robot.translation();
+  const double theta = candidate.field_T_robot.theta;
+  const std::size_t n = positive.size();
+  std::vector<double> upper = positive;  // an upper bound of each score, or the score itself
+  std::vector<char> exact(n, 0);
+  // Raises upper[i] no more: the score when it can reach `level`, else a bound below `level`.
+  auto scoreIfAbove = [&](std::size_t i, double level) {
+    if (exact[i] || upper[i] < level) return;
+    const Eigen::Vector2d t = t0 + s_values[i] * u;
+    const Pose2 pose(t.x(), t.y(), theta);
+    const double edge = evidence.edgePenalty(pose, map_.field());
+    if (positive[i] - edge < level) {
+      upper[i] = positive[i] - edge;
+      return;
+    }
+    const VisibilityEvidence::CheapTerms cheap = evidence.cheapTerms(pose, map_.field(), edge);
+    if (positive[i] - cheap.bound < level) {
+      upper[i] = positive[i] - cheap.bound;
+      return;
+    }
+    upper[i] = positive[i] - evidence.penalty(pose, map_, cheap);
+    exact[i] = 1;
+  };
+  AlongLineFit fit;
+  if (n == 0) return fit;
+  // The best score, best positive score first: no position whose positive score is below the
+  // best so far can beat it.
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return positive[a] > positive[b]; });
+  fit.best = -1e300;
+  for (std::size_t i : order) {
+    if (fit.best > -1e300 && positive[i] < fit.best) break;
+    scoreIfAbove(i, fit.best > -1e300 ? fit.best : -1e300);
+    if (exact[i]) fit.best = std::max(fit.best, upper[i]);
+  }
+  // The first and the last position that reach the floor, each searched from its end.
+  const double floor = fit.best - config_.line_scan_tolerance * std::max(std::abs(fit.best), 1.0);
+  auto reaches = [&](std::size_t i) {
+    scoreIfAbove(i, floor);
+    return exact[i] && upper[i] >= floor;
+  };
+  std::size_t first = 0, last = n - 1;
+  while (first < n && !reaches(first)) ++first;
+  if (first == n) return fit;
+  while (last > first && !reaches(last)) --last;
+  fit.found = true;
+  fit.first = first;
+  fit.last = last;
+  return fit;
 }
 
 void GlobalHoughLocalizer::finish(PoseHypothesis& h, const WeightedPoints& points,

@@ -100,6 +100,18 @@ class GlobalHoughLocalizer {
   std::vector<PoseHypothesis> placeAlongLines(const PoseHypothesis& candidate,
                                               const WeightedPoints& points,
                                               const VisibilityEvidence& evidence) const;
+  /// Of a scan along the lines: the best score (positive less negative evidence) and the first
+  /// and last positions (indices) whose score is within line_scan_tolerance of it.
+  struct AlongLineFit {
+    bool found = false;
+    double best = -1e300;
+    std::size_t first = 0, last = 0;
+  };
+  /// The fit of the scan at s_values along candidate's line_direction from its translation, with
+  /// `positive` the positive score at each position; the negative evidence only where needed.
+  AlongLineFit fitAlongLine(const PoseHypothesis& candidate, const std::vector<double>& s_values,
+                            const std::vector<double>& positive,
+                            const VisibilityEvidence& evidence) const;
   /// True when only parallel lines are in view: a 1-D hypothesis explains the points at least
   /// parallel_only_share as well as the best full pose, and that pose has few points across the
   /// lines.
