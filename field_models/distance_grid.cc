@@ -17,6 +17,8 @@ DistanceGrid::DistanceGrid(const FieldModel& field, const DistanceGridConfig& co
   inv_resolution_ = 1.0 / config.resolution_m;
   cols_ = static_cast<int>(std::ceil(2.0 * hx / config.resolution_m)) + 1;
   rows_ = static_cast<int>(std::ceil(2.0 * hy / config.resolution_m)) + 1;
+  last_col_ = cols_ - 1.0;
+  last_row_ = rows_ - 1.0;
   values_.resize(static_cast<size_t>(cols_) * rows_);
   for (int r = 0; r < rows_; ++r) {
     for (int c = 0; c < cols_; ++c) {

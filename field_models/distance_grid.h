@@ -28,7 +28,7 @@ class DistanceGrid {
   double distance(const Eigen::Vector2d& p_field) const {
     const double gx = (p_field.x() - origin_.x()) * inv_resolution_;
     const double gy = (p_field.y() - origin_.y()) * inv_resolution_;
-    if (gx >= 0.0 && gy >= 0.0 && gx < cols_ - 1.0 && gy < rows_ - 1.0) {
+    if (gx >= 0.0 && gy >= 0.0 && gx < last_col_ && gy < last_row_) {
       return interpolate(gx, gy, static_cast<int>(gx), static_cast<int>(gy));
     }
     return distance(p_field, nullptr);
@@ -41,7 +41,7 @@ class DistanceGrid {
   double distanceBelow(const Eigen::Vector2d& p_field, double limit_m) const {
     const double gx = (p_field.x() - origin_.x()) * inv_resolution_;
     const double gy = (p_field.y() - origin_.y()) * inv_resolution_;
-    if (gx >= 0.0 && gy >= 0.0 && gx < cols_ - 1.0 && gy < rows_ - 1.0) {
+    if (gx >= 0.0 && gy >= 0.0 && gx < last_col_ && gy < last_row_) {
       const int c0 = static_cast<int>(gx), r0 = static_cast<int>(gy);
       const double bound =
           kBlockUnitM *
@@ -57,7 +57,7 @@ class DistanceGrid {
   void prefetch(const Eigen::Vector2d& p_field, double limit_m) const {
     const double gx = (p_field.x() - origin_.x()) * inv_resolution_;
     const double gy = (p_field.y() - origin_.y()) * inv_resolution_;
-    if (!(gx >= 0.0 && gy >= 0.0 && gx < cols_ - 1.0 && gy < rows_ - 1.0)) return;
+    if (!(gx >= 0.0 && gy >= 0.0 && gx < last_col_ && gy < last_row_)) return;
     const int c0 = static_cast<int>(gx), r0 = static_cast<int>(gy);
     const double bound =
         kBlockUnitM *
@@ -73,7 +73,7 @@ class DistanceGrid {
   double lowerBound(const Eigen::Vector2d& p_field) const {
     const double gx = (p_field.x() - origin_.x()) * inv_resolution_;
     const double gy = (p_field.y() - origin_.y()) * inv_resolution_;
-    if (!(gx >= 0.0 && gy >= 0.0 && gx < cols_ - 1.0 && gy < rows_ - 1.0)) return 0.0;
+    if (!(gx >= 0.0 && gy >= 0.0 && gx < last_col_ && gy < last_row_)) return 0.0;
     const int c0 = static_cast<int>(gx), r0 = static_cast<int>(gy);
     return kBlockUnitM * block_min_[static_cast<size_t>(r0 >> kBlockShift) * block_cols_ +
                                     (c0 >> kBlockShift)] -
@@ -84,7 +84,7 @@ class DistanceGrid {
   bool onGrid(const Eigen::Vector2d& p_field) const {
     const double gx = (p_field.x() - origin_.x()) * inv_resolution_;
     const double gy = (p_field.y() - origin_.y()) * inv_resolution_;
-    return gx >= 0.0 && gy >= 0.0 && gx < cols_ - 1.0 && gy < rows_ - 1.0;
+    return gx >= 0.0 && gy >= 0.0 && gx < last_col_ && gy < last_row_;
   }
   /// A lower bound of distance(q') for every q' = q + (dx, dy) with |dx| + |dy| <= moved_l1_m
   /// and length <= moved_m, where distanceBelow(q, limit) returned `seen_m`; where it is >=
@@ -96,7 +96,11 @@ class DistanceGrid {
   /// near a line.
   double movedLowerBound(const Eigen::Vector2d& q, double seen_m, double moved_l1_m,
                          double moved_m) const {
-    if (!onGrid(q)) return seen_m - slope_ * moved_l1_m - moved_m;
+    return movedLowerBound(onGrid(q), seen_m, moved_l1_m, moved_m);
+  }
+  /// The same with q_on_grid = onGrid(q), for a caller that tries several moves from one q.
+  double movedLowerBound(bool q_on_grid, double seen_m, double moved_l1_m, double moved_m) const {
+    if (!q_on_grid) return seen_m - slope_ * moved_l1_m - moved_m;
     return std::max(seen_m - slope_ * moved_l1_m, seen_m - moved_m - 2.0 * cell_diagonal_);
   }
 
@@ -128,6 +132,9 @@ class DistanceGrid {
   double inv_resolution_ = 0.0;
   int cols_ = 0;
   int rows_ = 0;
+  /// cols_ - 1 and rows_ - 1: lookups interpolate where 0 <= gx < last_col_, 0 <= gy < last_row_.
+  double last_col_ = -1.0;
+  double last_row_ = -1.0;
   std::vector<float> values_;
   /// Per block of 2^kBlockShift x 2^kBlockShift cells: the smallest of its nodes (a lower bound
   /// of every bilinear lookup inside it, as a convex combination of nodes), rounded down to

@@ -133,9 +133,10 @@ std::vector<double> scoreAlongLine(const WeightedPoints& points, double theta_ra
       out[j] += w * kernel(d, inv_w2);
       std::size_t next = j + 1;
       if (d > limit) {
+        const bool on_grid = grid.onGrid(q);
         while (next < n) {
           const double ds = s_values[next] - s_values[j];
-          if (grid.movedLowerBound(q, d, ds * u_l1 + kRoundingM, ds * u_norm + kRoundingM) <
+          if (grid.movedLowerBound(on_grid, d, ds * u_l1 + kRoundingM, ds * u_norm + kRoundingM) <
               limit) {
             break;
           }
