@@ -11,6 +11,7 @@
 #include "field_models/distance_grid.h"
 #include "field_models/field_distance.h"
 #include "field_models/standard_fields.h"
+#include "localization/field_edge_evidence.h"
 #include "localization/hough_transform.h"
 #include "localization/map_signature.h"
 #include "localization/pose_refinement.h"
@@ -227,6 +228,49 @@ TEST_P(FastPathsTest, EvidenceBucketsVisitEverySampleInTheBoxAndNoneOfAMissingBo
   map.forEachEvidenceSample(Eigen::Vector2d(-1e300, -1e300), Eigen::Vector2d(1e300, 1e300),
                             [&](const Eigen::Vector2d&) { ++visited; });
   EXPECT_EQ(visited, static_cast<int>(samples.size()));
+}
+
+TEST_P(FastPathsTest, FieldEdgeCostInBlocksEqualsTheCostSampleBySample) {
+  const FieldModel field = makeStandardField(GetParam());
+  const double hx = field.outerHalfLength(), hy = field.outerHalfWidth();
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  FieldEdgeConfig config;
+  config.sigma_floor_m = 0.15;
+  config.min_samples = 1;
+  // 70 samples: two full blocks of meanCost's 32 and a partial one; axis-parallel rays too.
+  GroundPoints frame;
+  for (int i = 0; i < 70; ++i) {
+    const double bearing = i % 10 == 0 ? M_PI / 2 * (i / 10 % 4) : M_PI * u(rng);
+    const double range = 1.0 + 12.0 * std::abs(u(rng));
+    frame.field_edge.push_back(
+        {range * Eigen::Vector2d(std::cos(bearing), std::sin(bearing)), 0.3 * std::abs(u(rng)), 0});
+  }
+  const FieldEdgeEvidence evidence(frame, config);
+  ASSERT_FALSE(evidence.empty());
+  for (int trial = 0; trial < 2000; ++trial) {
+    // On the carpet, near its edge, and off it.
+    const Pose2 pose(1.2 * hx * u(rng), 1.2 * hy * u(rng), M_PI * u(rng));
+    // The plain computation: one sample after the other, as before the blocks.
+    const bool off = !(std::abs(pose.x) <= hx && std::abs(pose.y) <= hy);
+    const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+    double sum = 0.0;
+    for (const FieldEdgePoint& e : frame.field_edge) {
+      const double range = e.p_robot.norm();
+      const Eigen::Vector2d direction = e.p_robot / range;
+      const double inv_sigma =
+          1.0 / (config.clip_sigmas * std::hypot(e.range_sigma_m, config.sigma_floor_m));
+      const double dx = c * direction.x() - s * direction.y();
+      const double dy = s * direction.x() + c * direction.y();
+      const double to_x = (std::copysign(hx, dx) - pose.x) / dx;
+      const double to_y = (std::copysign(hy, dy) - pose.y) / dy;
+      const double predicted = off ? 0.0 : std::min(to_x, to_y);
+      const double error = std::min(1.0, std::abs(range - predicted) * inv_sigma);
+      sum += (range < predicted ? config.nearer_weight : 1.0) * error * error;
+    }
+    const double plain = sum / static_cast<double>(frame.field_edge.size());
+    ASSERT_EQ(evidence.meanCost(pose, hx, hy), plain) << trial;  // bit for bit
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Fields, FastPathsTest, ::testing::Values("spl", "msl"));
