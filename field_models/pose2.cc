@@ -4,7 +4,7 @@
 
 namespace houghloc {
 
-double normalizeAngle(double angle_rad) {
+double wrapAngle(double angle_rad) {
   if (!std::isfinite(angle_rad)) return angle_rad;
   double wrapped = std::remainder(angle_rad, 2.0 * M_PI);  // in [-pi, pi]
   if (wrapped <= -M_PI) wrapped += 2.0 * M_PI;

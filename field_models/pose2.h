@@ -5,8 +5,15 @@
 
 namespace houghloc {
 
-/// Wraps an angle to (-pi, pi] (DESIGN §3).
-double normalizeAngle(double angle_rad);
+/// Wraps an angle to (-pi, pi] (DESIGN §3), the general case (std::remainder).
+double wrapAngle(double angle_rad);
+/// Wraps an angle to (-pi, pi] (DESIGN §3). Inline with a fast path: every Pose2 is built through
+/// it, and its angles are mostly in range already, where wrapAngle returns them unchanged (the
+/// quotient by 2 pi is at most 1/2 in magnitude and rounds to 0, the tie at pi to even 0).
+inline double normalizeAngle(double angle_rad) {
+  if (angle_rad > -M_PI && angle_rad <= M_PI) return angle_rad;
+  return wrapAngle(angle_rad);
+}
 
 /// A rigid 2-D transform a_T_b = (x, y, theta): p_a = Rz(theta) p_b + (x, y) (DESIGN §3).
 /// Names carry the frames, e.g. `field_T_robot`; composition reads left to right:

@@ -275,6 +275,38 @@ TEST_P(FastPathsTest, FieldEdgeCostInBlocksEqualsTheCostSampleBySample) {
 
 INSTANTIATE_TEST_SUITE_P(Fields, FastPathsTest, ::testing::Values("spl", "msl"));
 
+TEST(FastAngleTest, NormalizeAngleEqualsTheGeneralWrap) {
+  // The in-range fast path against std::remainder's wrap, at the ends of the range, just beyond
+  // them and at random, bit for bit.
+  std::vector<double> angles = {0.0,
+                                -0.0,
+                                M_PI,
+                                -M_PI,
+                                std::nextafter(M_PI, 0.0),
+                                std::nextafter(M_PI, 4.0),
+                                std::nextafter(-M_PI, 0.0),
+                                std::nextafter(-M_PI, -4.0),
+                                2.0 * M_PI,
+                                -2.0 * M_PI,
+                                3.0 * M_PI,
+                                1e-300,
+                                std::numeric_limits<double>::infinity(),
+                                std::numeric_limits<double>::quiet_NaN()};
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(-4.0 * M_PI, 4.0 * M_PI);
+  for (int i = 0; i < 100000; ++i) angles.push_back(i % 2 ? u(rng) : u(rng) / 4.0);
+  for (const double a : angles) {
+    const double fast = normalizeAngle(a), general = wrapAngle(a);
+    if (std::isnan(general)) {
+      ASSERT_TRUE(std::isnan(fast)) << a;
+    } else {
+      ASSERT_EQ(std::signbit(fast), std::signbit(general)) << a;
+      ASSERT_EQ(fast, general) << a;
+    }
+    if (std::isfinite(a)) ASSERT_TRUE(fast > -M_PI && fast <= M_PI) << a;
+  }
+}
+
 TEST(FastHoughTest, AddPointsEqualsAddPointOneByOne) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-5.0, 5.0);
