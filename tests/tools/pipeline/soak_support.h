@@ -34,16 +34,11 @@ inline double threadCpuSeconds() { return cpuSeconds(CLOCK_THREAD_CPUTIME_ID); }
 /// CPU time of every thread of this process (s).
 inline double processCpuSeconds() { return cpuSeconds(CLOCK_PROCESS_CPUTIME_ID); }
 
-/// CPU seconds of a window of steps from cumulative CPU readings taken before its first step and
-/// after each step: the median over its blocks of `block` steps, times the number of blocks. A
-/// burst of other work on the machine (ctest -j2) inflates a few blocks, not the median.
-inline double windowCpuSeconds(const std::vector<double>& readings, std::size_t block) {
-  std::vector<double> blocks;
-  for (std::size_t i = 0; i + block < readings.size(); i += block)
-    blocks.push_back(readings[i + block] - readings[i]);
-  if (blocks.empty()) return 0.0;
-  std::nth_element(blocks.begin(), blocks.begin() + blocks.size() / 2, blocks.end());
-  return blocks[blocks.size() / 2] * static_cast<double>(blocks.size());
+/// The median of `values` (0 when empty).
+inline double medianOf(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
 }
 
 /// One step of a looped run: which recorded frame it replays, and the frame as the run sees it.
