@@ -34,12 +34,7 @@ void GlobalHoughLocalizer::keepBestOfFirstRound(std::vector<PoseHypothesis>& loc
   // placeAlongLines assumes), so once a candidate's positive score is below the kept-th best
   // total so far, neither it nor any weaker one can enter; the candidates kept, their order and
   // their scores are those of scoring all (round two rescores them anyway).
-  const WeightedPoints points = subsamplePoints(s.points, config_.prescore_points / 4);
-  for (PoseHypothesis& c : located) {
-    const PoseScore score = scorePose(points, c.field_T_robot, map_.grid(), config_.scoring);
-    c.score = score.score;
-    c.inlier_share = score.inlier_share;
-  }
+  scoreCandidates(located, subsamplePoints(s.points, config_.prescore_points / 4), nullptr);
   auto byScore = [&](std::size_t a, std::size_t b) { return located[a].score > located[b].score; };
   std::vector<std::size_t> order(located.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
