@@ -160,7 +160,7 @@ GlobalHoughLocalizer::AlongLineFit GlobalHoughLocalizer::fitAlongLine(
   fit.best = -1e300;
   for (std::size_t i : order) {
     if (fit.best > -1e300 && positive[i] < fit.best) break;
-    scoreIfAbove(i, fit.best > -1e300 ? fit.best : -1e300);
+    scoreIfAbove(i, fit.best);
     if (exact[i]) fit.best = std::max(fit.best, upper[i]);
   }
   // The first and the last position that reach the floor, each searched from its end.
