@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
 
 #include "localization/tracked_hypotheses.h"
 #include "localization/tracker_config.h"
@@ -88,12 +89,19 @@ struct EstimateCsvWriter::Files {
   Files(const std::string& dir)
       : poses(posesPath(dir), withTwinWeight(kPosesHeader)),
         hypotheses(hypothesesPath(dir), kHypothesesHeader) {}
+  std::optional<FrameEstimate> held;  ///< the newest estimate, written once its time is over
 };
 
 EstimateCsvWriter::EstimateCsvWriter(const std::string& out_dir)
     : files_(std::make_shared<Files>(out_dir)) {}
 
 void EstimateCsvWriter::write(const FrameEstimate& estimate) {
+  std::optional<FrameEstimate>& held = files_->held;
+  if (held && held->t_us != estimate.t_us) writeRows(*held);
+  held = estimate;
+}
+
+void EstimateCsvWriter::writeRows(const FrameEstimate& estimate) {
   CsvWriter& p = files_->poses;
   CsvWriter& h = files_->hypotheses;
   const std::string t = p.format(estimate.t_us);
@@ -117,6 +125,8 @@ void EstimateCsvWriter::write(const FrameEstimate& estimate) {
 }
 
 void EstimateCsvWriter::close() {
+  if (files_->held) writeRows(*files_->held);
+  files_->held.reset();
   files_->poses.close();
   files_->hypotheses.close();
 }

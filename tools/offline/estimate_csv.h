@@ -23,16 +23,21 @@ struct FrameEstimate {
 /// last column `twin_weight` (a frame without hypotheses gets a poses.csv row with empty pose
 /// fields, num_hypotheses 0 and twin_weight 0).
 /// Numbers are written so that readFrameEstimates() gets the same doubles back.
+/// One estimate per time: when consecutive estimates share a t_us (two cameras exposed together,
+/// or one camera whose clock repeated a time), only the last, which has seen every one of those
+/// frames, is written.
 class EstimateCsvWriter {
  public:
   /// Throws RecordingError naming the file when it cannot be created.
   explicit EstimateCsvWriter(const std::string& out_dir);
   void write(const FrameEstimate& estimate);
-  /// Throws RecordingError naming the file when writing failed.
+  /// Writes the last estimate held back; throws RecordingError naming the file when writing
+  /// failed.
   void close();
 
  private:
   struct Files;
+  void writeRows(const FrameEstimate& estimate);
   std::shared_ptr<Files> files_;
 };
 

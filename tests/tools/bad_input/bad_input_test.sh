@@ -105,8 +105,9 @@ copy; awk -F, -v OFS=, 'NR == 3 { $2 = "99999999999999999999" } { print }' base/
 offline frames_time_overflow fail "c/frames.csv:3: column 't_us'"
 copy; awk -F, -v OFS=, 'NR == 4 { $2 = "1" } { print }' base/frames.csv >c/frames.csv
 offline frames_time_backwards fail "c/frames.csv:4: t_us goes backwards"
-# Not a case yet: a frames.csv time repeated by one camera makes houghloc-offline reject its own
-# poses.csv ("t_us ... repeats line ...", exit 2; docs/reliability.md, open findings).
+# One camera repeating a time (a clock glitch): both frames run, poses.csv keeps one row per time.
+copy; awk -F, -v OFS=, 'NR == 3 { t = $2 } NR == 4 { $2 = t } { print }' base/frames.csv >c/frames.csv
+offline frames_time_repeated 0 ""
 col=2
 for name in x y theta; do
   for bad in nan inf 1e309; do

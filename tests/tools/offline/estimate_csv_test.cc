@@ -62,6 +62,33 @@ GaussianPose randomPose(std::mt19937& rng) {
   return g;
 }
 
+TEST_F(EstimateCsvTest, EstimatesSharingATimeGiveOneRowSetTheLastOnes) {
+  // Two cameras exposed together (t 100), then one camera alone (t 200).
+  std::mt19937 rng(11);
+  FrameEstimate top, bottom, later;
+  top.t_us = bottom.t_us = 100;
+  later.t_us = 200;
+  top.status = "AMBIGUOUS";
+  bottom.status = later.status = "TRACKING";
+  for (int k = 0; k < 3; ++k) top.hypotheses.push_back(randomPose(rng));
+  bottom.hypotheses.push_back(randomPose(rng));
+  later.hypotheses.push_back(randomPose(rng));
+  {
+    EstimateCsvWriter writer(dir_);
+    for (const FrameEstimate* e : {&top, &bottom, &later}) writer.write(*e);
+    writer.close();
+  }
+  EXPECT_EQ(lines("poses.csv").size(), 3u);       // header + t 100 + t 200
+  EXPECT_EQ(lines("hypotheses.csv").size(), 3u);  // bottom's one hypothesis, later's one
+  const std::vector<FrameEstimate> read = readFrameEstimates(dir_);
+  ASSERT_EQ(read.size(), 2u);
+  EXPECT_EQ(read[0].t_us, 100);
+  EXPECT_EQ(read[0].status, "TRACKING");
+  ASSERT_EQ(read[0].hypotheses.size(), 1u);
+  EXPECT_EQ(read[0].hypotheses[0].mean.x, bottom.hypotheses[0].mean.x);
+  EXPECT_EQ(read[1].t_us, 200);
+}
+
 TEST_F(EstimateCsvTest, RoundTripIsExactAndHeadersAreTheDesignOnes) {
   std::mt19937 rng(7);
   std::vector<FrameEstimate> written;
