@@ -50,6 +50,7 @@ examples() {
 commands=()
 for page in "${pages[@]}"; do
   mapfile -t page_commands < <(examples "$page")
+  ((${#page_commands[@]})) || continue
   echo "readme-examples: ${page#"$src"/}: ${#page_commands[@]} command(s)"
   commands+=("${page_commands[@]}")
 done
