@@ -1,14 +1,32 @@
 #!/usr/bin/env bash
-# Runs the README's example commands as written (every ```bash block right after a line
+# Runs the example commands of markdown pages as written (every ```bash block right after a line
 # `<!-- readme-examples -->`), from a scratch folder that looks like the repository root after
 # tools/setup.sh: build/ is this build tree, everything else links to the sources. Each command must
 # exit 0; a command ending in `# runs until stopped` is stopped after 3 s and must still be
-# running then. Fails when the README has no such block, so the examples cannot drop out of
-# the test unnoticed.
-#   readme_examples_test.sh SOURCE_DIR BINARY_DIR
+# running then. Fails when the pages together have no such block, so the examples cannot drop out
+# of the test unnoticed.
+#   readme_examples_test.sh SOURCE_DIR BINARY_DIR [PAGE...]
+# PAGE: a markdown file relative to SOURCE_DIR, or a glob such as 'docs/*.md' (quoted; expanded
+# in SOURCE_DIR); default README.md. Pages run in the order given, blocks in page order.
 set -uo pipefail
 src=${1:?source dir} bin=${2:?binary dir}
-readme="$src/README.md"
+shift 2
+patterns=("$@")
+((${#patterns[@]})) || patterns=(README.md)
+
+pages=()
+for pattern in "${patterns[@]}"; do
+  matched=0
+  for page in "$src"/$pattern; do
+    [[ -f $page ]] || continue
+    pages+=("$page")
+    matched=1
+  done
+  if ((!matched)); then
+    echo "readme-examples: no page matches $pattern in $src" >&2
+    exit 1
+  fi
+done
 
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
@@ -17,18 +35,28 @@ for entry in "$src"/*; do
   [[ $(basename "$entry") == build* ]] || ln -s "$entry" "$scratch/$(basename "$entry")"
 done
 
-# The example lines, `\` continuations joined; blank and comment-only lines dropped. A trailing
-# comment stays: bash ignores it.
-mapfile -t commands < <(awk '
-  /<!-- readme-examples -->/ { armed = 1; next }
-  armed && /^```bash/ { inside = 1; armed = 0; next }
-  inside && /^```/ { inside = 0; next }
-  inside { print }
-' "$readme" | awk '/\\$/ { sub(/\\$/, ""); line = line $0; next } { print line $0; line = "" }' |
-  sed -e '/^[[:space:]]*$/d' -e '/^[[:space:]]*#/d')
+# The example lines of one page, `\` continuations joined; blank and comment-only lines dropped.
+# A trailing comment stays: bash ignores it.
+examples() {
+  awk '
+    /<!-- readme-examples -->/ { armed = 1; next }
+    armed && /^```bash/ { inside = 1; armed = 0; next }
+    inside && /^```/ { inside = 0; next }
+    inside { print }
+  ' "$1" | awk '/\\$/ { sub(/\\$/, ""); line = line $0; next } { print line $0; line = "" }' |
+    sed -e '/^[[:space:]]*$/d' -e '/^[[:space:]]*#/d'
+}
+
+commands=()
+for page in "${pages[@]}"; do
+  mapfile -t page_commands < <(examples "$page")
+  ((${#page_commands[@]})) || continue
+  echo "readme-examples: ${page#"$src"/}: ${#page_commands[@]} command(s)"
+  commands+=("${page_commands[@]}")
+done
 
 if ((${#commands[@]} == 0)); then
-  echo "readme-examples: $readme has no \`\`\`bash block after <!-- readme-examples -->" >&2
+  echo "readme-examples: no \`\`\`bash block after <!-- readme-examples --> in ${patterns[*]}" >&2
   exit 1
 fi
 failed=0
