@@ -159,7 +159,7 @@ TEST(RealGroundTruthFrames, SevenFramesWithLinesHaveAGroundTruthPose) {
 TEST(RealGroundTruthFrames, PointToMapDistanceAndGoalLineAtTheRecordedPose) {
   REQUIRE_REAL_DATA();
   // The target is a median <= 0.10 m on each frame; at the recorded camera poses no
-  // frame meets it. By range, the points' median distance is 0.06-0.26 m within 3 m and
+  // frame meets it. By range, the points' median distance is 0.05-0.26 m within 3 m and
   // 0.6-1.1 m at 3-4 m: the recorded chain leaves the camera pitched 2.4-2.9 deg too little
   // (the set's fit_dpitch), which moves a ground point at range r by up to r^2 / h x dpitch
   // (0.41 m camera height, 2.7 deg: 0.5 m at 2 m, 1.0 m at 3 m). With fit_dpitch added (and
