@@ -7,6 +7,7 @@
 #include <set>
 
 #include "tools/offline/offline_config.h"
+#include "tools/realframes/groundtruth_report.h"
 #include "tools/realframes/real_summary.h"
 #include "tools/recording/recording.h"
 
@@ -29,7 +30,8 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "houghloc-real-report: %s: not a folder\n", data_dir.c_str());
       return 2;
     }
-    const VisionConfig config = loadOfflineConfig(config_file).vision;
+    const OfflineConfig offline_config = loadOfflineConfig(config_file);
+    const VisionConfig& config = offline_config.vision;
     const std::vector<RealFrameLabel> labels = readRealIndex(data_dir);
     std::vector<std::string> folders;
     for (const RealFrameLabel& l : labels) {
@@ -39,11 +41,18 @@ int main(int argc, char** argv) {
     printRealSummaryHeader();
     int yes = 0, empty = 0, base_empty = 0;
     long no_points = 0;
+    std::vector<GroundTruthFrameReport> truth_frames;  // folders with groundtruth.csv
+    std::vector<std::string> truth_folders;
     for (const std::string& folder : folders) {
       if (!wanted.empty() && !wanted.count(folder)) continue;
       std::fprintf(stderr, "houghloc-real-report: %s\n", folder.c_str());
-      const RealFolderSummary s =
-          summarizeRealFolder(data_dir, folder, runRealFolder(data_dir, labels, folder, config));
+      const std::vector<RealFrameOutcome> outcomes =
+          runRealFolder(data_dir, labels, folder, config);
+      const RealFolderSummary s = summarizeRealFolder(data_dir, folder, outcomes);
+      for (GroundTruthFrameReport& r : groundTruthFrames(data_dir, folder, outcomes)) {
+        truth_frames.push_back(std::move(r));
+      }
+      if (folderHasGroundTruth(data_dir, folder)) truth_folders.push_back(folder);
       printRealSummary(s);
       yes += s.yes, empty += s.houghloc.yes_empty, base_empty += s.baseline.yes_empty;
       no_points += s.houghloc.no_points;
@@ -51,6 +60,18 @@ int main(int argc, char** argv) {
     std::printf(
         "total: %d of %d yes-frames without a point (baseline %d); %ld points on no-frames\n",
         empty, yes, base_empty, no_points);
+    if (!truth_folders.empty()) printGroundTruthFrames(truth_frames);
+    const PipelineConfig pipeline_config{offline_config.vision, offline_config.localizer};
+    for (const std::string& folder : truth_folders) {
+      std::fprintf(stderr, "houghloc-real-report: %s --global-only\n", folder.c_str());
+      printGlobalCheck((folder + ", recorded camera pose").c_str(),
+                       globalCheckAtGroundTruth(data_dir, folder, pipeline_config));
+      if (!folderHasFitDpitch(data_dir, folder)) continue;
+      GlobalCheckConfig with_fit;
+      with_fit.add_fit_dpitch = true;
+      printGlobalCheck((folder + ", camera pitch + fit_dpitch").c_str(),
+                       globalCheckAtGroundTruth(data_dir, folder, pipeline_config, with_fit));
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "houghloc-real-report: %s\n", e.what());
     return 1;

@@ -29,6 +29,8 @@ struct RealFrameOutcome {
   int baseline_points = 0;
   std::vector<Eigen::Vector2f> point_pixels;     ///< houghloc's projected points' pixels
   std::vector<Eigen::Vector2f> baseline_pixels;  ///< the column scan's projected points' pixels
+  std::vector<Eigen::Vector2d> points_robot;     ///< houghloc's ground points (robot frame, m)
+  std::vector<Eigen::Vector2d> baseline_robot;   ///< the column scan's (robot frame, m)
   VisionDiagnostics diagnostics;
   FrameRejection rejection = FrameRejection::kNone;
 };

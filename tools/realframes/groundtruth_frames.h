@@ -1,0 +1,68 @@
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "field_models/pose2.h"
+#include "tools/pipeline/localization_pipeline.h"
+#include "tools/realframes/groundtruth_metrics.h"
+#include "tools/realframes/real_frames.h"
+
+namespace houghloc {
+
+/// One real frame that shows lines (index.csv: yes) and has a groundtruth.csv pose, scored at the
+/// recorded camera pose: houghloc's points beside the column-scan baseline's.
+struct GroundTruthFrameReport {
+  std::string folder, image;
+  std::int64_t t_us = 0;
+  Pose2 field_T_robot;
+  GroundTruthMetrics houghloc, baseline;
+};
+
+/// The scored frames of a folder from runRealFolder()'s outcomes (the folder's standard field;
+/// ground truth by groundTruthAt()). None when the folder has no groundtruth.csv. Throws
+/// RecordingError on a malformed folder.
+std::vector<GroundTruthFrameReport> groundTruthFrames(const std::string& data_dir,
+                                                      const std::string& folder,
+                                                      const std::vector<RealFrameOutcome>& outcomes,
+                                                      const GroundTruthMetricsConfig& config = {});
+
+/// When a --global-only hypothesis counts as the ground-truth pose.
+struct GlobalCheckConfig {
+  double position_m = 0.15;
+  double heading_rad = 5.0 * M_PI / 180.0;
+  /// Add frames.csv's fit_dpitch (physar: the pitch the images want on top of the recorded
+  /// chain) to each frame's camera pitch; frames without one keep the recorded pitch.
+  bool add_fit_dpitch = false;
+};
+
+/// One ground-truth frame through LocalizationPipeline in kGlobalOnly mode (as houghloc-offline
+/// --global-only runs it): its positioned hypotheses (heading-only ones are left out, as there).
+struct GlobalCheckFrame {
+  std::string image;
+  std::int64_t t_us = 0;
+  Pose2 truth;
+  int points = 0;
+  int hypotheses = 0;
+  int hit_rank = -1;         ///< first hypothesis within tolerance of the truth; -1 none
+  int mirror_hit_rank = -1;  ///< ... of the mirrored truth (-x, -y, theta + pi)
+  double nearest_m = 0.0;    ///< position error of the hypothesis nearest the truth (NaN: none)
+  double nearest_heading_rad = 0.0;  ///< its heading error
+  GroundTruthMetrics metrics;        ///< the pipeline's points at the camera pose used (see above)
+};
+
+/// Whether <data_dir>/<folder> has groundtruth.csv, and whether its frames.csv gives a fit_dpitch.
+bool folderHasGroundTruth(const std::string& data_dir, const std::string& folder);
+bool folderHasFitDpitch(const std::string& data_dir, const std::string& folder);
+
+/// Runs every frame of <data_dir>/<folder> in order (the folder's standard field, config's
+/// vision and localizer sections) and reports those with a ground-truth pose. Throws
+/// RecordingError on a malformed folder.
+std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_dir,
+                                                       const std::string& folder,
+                                                       const PipelineConfig& config,
+                                                       const GlobalCheckConfig& check = {});
+
+}  // namespace houghloc
