@@ -236,16 +236,9 @@ TEST(RealGroundTruthGlobalOnly, FitDpitchWithTheDefaultConfig) {
   ASSERT_EQ(frames.size(), 6u);
   EXPECT_GE(hits(frames), 2);
 }
-
-// The target at the recorded poses; not met (0 of 6, nearest hypotheses 0.38-1.12 m
-// off: the points lie up to 1 m beside the map, see above). Run with
-// --gtest_also_run_disabled_tests to measure.
-TEST(RealGroundTruthGlobalOnly, DISABLED_RecordedPoseFindsFourOfSix) {
-  REQUIRE_REAL_DATA();
-  const std::vector<GlobalCheckFrame> frames = globalCheck(false, true);
-  printGlobalCheck("physar_nao_top, recorded camera pose", frames);
-  EXPECT_GE(hits(frames), 4);
-}
+// At the recorded poses the target of 4 of 6 is not met: 0 of 6, the nearest hypotheses
+// 0.38-1.12 m off, because the points lie up to 1 m beside the map (see above);
+// houghloc-real-report prints that check beside these two.
 
 }  // namespace
 }  // namespace houghloc
