@@ -4,33 +4,17 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <map>
 #include <set>
 
+#include "tests/real/real_data.h"
 #include "tools/realframes/real_summary.h"
 
 namespace houghloc {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool dataPresent() { return fs::exists(fs::path(HOUGHLOC_REAL_DATA) / "index.csv"); }
-
-bool onCi() {
-  const char* ci = std::getenv("CI");
-  return ci && std::strcmp(ci, "true") == 0;
-}
-
-// With CI=true a missing folder fails; elsewhere the test is skipped with a message.
-#define REQUIRE_REAL_DATA()                                                \
-  do {                                                                     \
-    if (!dataPresent()) {                                                  \
-      if (onCi()) FAIL() << HOUGHLOC_REAL_DATA << ": real frames missing"; \
-      GTEST_SKIP() << "real frames not found at " << HOUGHLOC_REAL_DATA;   \
-    }                                                                      \
-  } while (false)
 
 class RealFramesTest : public ::testing::Test {
  protected:

@@ -6,11 +6,11 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <map>
 
 #include "field_models/standard_fields.h"
+#include "tests/real/real_data.h"
 #include "tools/realframes/groundtruth_report.h"
 #include "vision/camera_presets.h"
 
@@ -103,23 +103,6 @@ TEST(RealGroundTruthMetrics, VisibleSamplesLieInTheCameraViewWithinRange) {
 }
 
 // ---------------------------------------------------------------- the real frames
-
-bool dataPresent() { return fs::exists(fs::path(HOUGHLOC_REAL_DATA) / "index.csv"); }
-
-bool onCi() {
-  const char* ci = std::getenv("CI");
-  return ci && std::strcmp(ci, "true") == 0;
-}
-
-// With CI=true a missing folder fails; elsewhere the test is skipped with a message (as
-// real_frames_test).
-#define REQUIRE_REAL_DATA()                                                \
-  do {                                                                     \
-    if (!dataPresent()) {                                                  \
-      if (onCi()) FAIL() << HOUGHLOC_REAL_DATA << ": real frames missing"; \
-      GTEST_SKIP() << "real frames not found at " << HOUGHLOC_REAL_DATA;   \
-    }                                                                      \
-  } while (false)
 
 const char* const kTop = "physar_nao_top";
 const char* const kBottom = "physar_nao_bottom";
