@@ -45,8 +45,9 @@ void NodeCore::drop(DropReason reason, const std::string& message) {
   for (const auto& [id, t] : newest_image_utime_) problem_utime_ = std::max(problem_utime_, t);
 }
 
-bool NodeCore::refuseTime(std::int64_t utime, const std::string& what) {
+bool NodeCore::refuseTime(std::int64_t utime, const char* kind, const std::string* camera_id) {
   if (plausibleUtime(utime)) return false;
+  const std::string what = camera_id ? "camera '" + *camera_id + "': " + kind : kind;
   drop(DropReason::kMalformed, what + " with utime " + std::to_string(utime) + " out of range");
   return true;
 }
@@ -59,7 +60,7 @@ void NodeCore::onOdometry(const odometry_t& msg) {
 }
 
 void NodeCore::onCameraPose(const camera_pose_t& msg) {
-  if (refuseTime(msg.utime, "camera '" + msg.camera_id + "': pose")) return;
+  if (refuseTime(msg.utime, "pose", &msg.camera_id)) return;
   const std::optional<Pose3> pose = cameraPoseFromMessage(msg);
   if (!pose)
     return drop(DropReason::kMalformed, "camera '" + msg.camera_id + "': pose with NaN or inf");
@@ -81,7 +82,7 @@ std::optional<NodeOutput> NodeCore::onImage(const image_t& msg) {
     drop(DropReason::kMalformed, "image of unknown camera '" + msg.camera_id + "'");
     return std::nullopt;
   }
-  if (refuseTime(msg.utime, "camera '" + msg.camera_id + "': image")) return std::nullopt;
+  if (refuseTime(msg.utime, "image", &msg.camera_id)) return std::nullopt;
   const auto last = last_image_utime_.find(msg.camera_id);
   if (last != last_image_utime_.end() && msg.utime <= last->second) {
     if (last->second - msg.utime <= timing_.restart_gap_us) {

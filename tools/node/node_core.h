@@ -82,8 +82,9 @@ class NodeCore {
 
  private:
   void drop(DropReason reason, const std::string& message);
-  /// Drops (malformed) a message whose utime no clock gives, naming it by `what`; true if so.
-  bool refuseTime(std::int64_t utime, const std::string& what);
+  /// Drops (malformed) a message whose utime no clock gives, naming it by `kind` and, for a
+  /// camera's message, the camera; true if so. The name is built only for a refused message.
+  bool refuseTime(std::int64_t utime, const char* kind, const std::string* camera_id = nullptr);
   /// Odometry, camera poses and images of other cameras farther than max_stream_gap_us from
   /// the newest image, as text for the status message.
   std::string streamGaps() const;
