@@ -9,7 +9,8 @@ namespace {
 struct Sample {
   float r, g;
   int luma;
-  bool bottom;  ///< in the bottom band of the image
+  bool bottom;     ///< in the bottom band of the image
+  int diff_below;  ///< |luma change| to the sample one step below (-1: none)
 };
 
 float median(std::vector<float> values) {
@@ -17,6 +18,14 @@ float median(std::vector<float> values) {
   auto mid = values.begin() + static_cast<long>(values.size() / 2);
   std::nth_element(values.begin(), mid, values.end());
   return *mid;
+}
+
+/// The q-quantile (0-1) of values, reordering them; 0 when empty.
+float quantile(std::vector<float>* values, double q) {
+  if (values->empty()) return 0.f;
+  auto it = values->begin() + static_cast<long>(q * (values->size() - 1));
+  std::nth_element(values->begin(), it, values->end());
+  return *it;
 }
 
 float greyDistance(cv::Point2f c) { return std::hypot(c.x - 1.f / 3.f, c.y - 1.f / 3.f); }
@@ -28,12 +37,18 @@ std::vector<Sample> collectSamples(const cv::Mat& bgr, const std::vector<int>& s
   const int bottom_row = bgr.rows - static_cast<int>(config.bottom_band_share * bgr.rows);
   for (int u = step / 2; u < bgr.cols; u += step) {
     const int top = std::max(0, start_rows[static_cast<size_t>(u)]);
+    int below = -1;  // luma of the sample one step below in this column, -1: none
     for (int v = bgr.rows - 1 - step / 2; v >= top; v -= step) {
       const uchar* p = bgr.ptr<uchar>(v) + 3 * u;
       const int luma = FieldColor::luma(p);
-      if (luma < config.min_luma) continue;
+      if (luma < config.min_luma) {
+        below = -1;
+        continue;
+      }
       const float sum = static_cast<float>(p[0] + p[1] + p[2]);
-      samples.push_back({p[2] / sum, p[1] / sum, luma, v >= bottom_row});
+      samples.push_back({p[2] / sum, p[1] / sum, luma, v >= bottom_row,
+                         below >= 0 ? std::abs(luma - below) : -1});
+      below = luma;
     }
   }
   return samples;
@@ -154,9 +169,12 @@ FieldColor estimateFieldColor(const cv::Mat& bgr, const std::vector<int>& start_
                         std::min(static_cast<float>(config.min_chroma_radius), limit), limit);
   }
 
-  std::vector<float> lumas;
+  std::vector<float> lumas, local_diffs;
   for (const Sample& s : samples) {
-    if (std::hypot(s.r - centre.x, s.g - centre.y) < radius) lumas.push_back(s.luma);
+    if (std::hypot(s.r - centre.x, s.g - centre.y) < radius) {
+      lumas.push_back(s.luma);
+      if (s.diff_below >= 0) local_diffs.push_back(s.diff_below);
+    }
   }
   color.r = centre.x;
   color.g = centre.y;
@@ -167,6 +185,11 @@ FieldColor estimateFieldColor(const cv::Mat& bgr, const std::vector<int>& start_
   std::vector<float> deviations;
   for (float l : lumas) deviations.push_back(std::abs(l - color.luma_median));
   color.luma_sigma = 1.4826f * median(deviations);
+  // Neighbouring samples in a column, 12 px apart, differ by the turf's texture and noise but
+  // hardly by the light (gradients, vignetting, shadows change over tens of px): the spread of
+  // their differences / sqrt 2 is the texture alone (the median |difference| of two Gaussian
+  // samples is 0.954 sigma).
+  color.texture_sigma = quantile(&local_diffs, 0.5) / 0.954f;
   color.min_luma = std::max(static_cast<float>(config.min_luma),
                             static_cast<float>(config.shadow_luma_ratio) * color.luma_median);
   const float grey_distance = greyDistance(centre);

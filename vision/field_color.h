@@ -38,14 +38,16 @@ struct FieldColorConfig {
 /// Colour temperature moves it, which the per-frame estimate follows.
 struct FieldColor {
   bool valid = false;
-  float r = 0.f, g = 0.f;    ///< chromaticity centre of the field
-  float radius = 0.f;        ///< accepted chromaticity distance from the centre
-  float luma_median = 0.f;   ///< of the field samples, 0-255
-  float luma_sigma = 0.f;    ///< robust spread (turf texture and noise), 0-255
-  float min_luma = 0.f;      ///< darker pixels are not field (shadow limit)
-  float white_radius = 0.f;  ///< chromaticity distance to grey below which a pixel is "white"
-  float field_share = 0.f;   ///< share of samples below the horizon that are field
-  float chroma_noise = 0.f;  ///< FieldColorConfig::chroma_noise
+  float r = 0.f, g = 0.f;     ///< chromaticity centre of the field
+  float radius = 0.f;         ///< accepted chromaticity distance from the centre
+  float luma_median = 0.f;    ///< of the field samples, 0-255
+  float luma_sigma = 0.f;     ///< robust spread (turf texture and noise), 0-255
+  float texture_sigma = 0.f;  ///< the same from luma changes between field samples 12 px
+                              ///< apart (/ sqrt 2): texture without the light, 0-255
+  float min_luma = 0.f;       ///< darker pixels are not field (shadow limit)
+  float white_radius = 0.f;   ///< chromaticity distance to grey below which a pixel is "white"
+  float field_share = 0.f;    ///< share of samples below the horizon that are field
+  float chroma_noise = 0.f;   ///< FieldColorConfig::chroma_noise
 
   /// Luma used throughout the scanlines: (B + 2G + R) / 4, 0-255.
   static int luma(const uchar* bgr) { return (bgr[0] + 2 * bgr[1] + bgr[2]) >> 2; }

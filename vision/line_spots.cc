@@ -22,8 +22,10 @@ class SpotScanner {
   SpotScanner(const FieldColor& color, const LineWidthModel& widths, const LineSpotConfig& config,
               std::vector<LineSpot>* spots, LineSpotStats* stats)
       : color_(color), widths_(widths), config_(config), spots_(spots), stats_(stats) {
+    const double noise_sigma =
+        std::min<double>(color.luma_sigma, config.max_sigma_over_texture * color.texture_sigma);
     threshold_ =
-        static_cast<int>(std::max(config.min_contrast, config.noise_contrast * color.luma_sigma));
+        static_cast<int>(std::max(config.min_contrast, config.noise_contrast * noise_sigma));
     dark_luma_ = static_cast<int>(config.dark_luma_ratio * color.luma_median);
   }
 
@@ -74,17 +76,36 @@ class SpotScanner {
   }
 
   /// Turf within `count` px, with nothing dark on the way: a white ball patch is followed by a
-  /// black one before the turf, a line edge only by its anti-aliased blend.
-  bool greenWithin(const Scanline& line, int from, int dir, int count) const {
+  /// black one before the turf, a line edge only by its anti-aliased blend. Then `beside` px of
+  /// turf beyond it (the image border may cut them short): a line lies on the field, so turf
+  /// goes on beside it, while the rim of a robot's leg or a ball patch next to a black one is
+  /// bounded by a pixel or two that pass for turf (grey, tinted green by the field) and then
+  /// by more of the object.
+  bool greenWithin(const Scanline& line, int from, int dir, int count, int beside,
+                   int paint_luma) const {
     for (int k = 0; k < count; ++k) {
       const int idx = from + dir * k;
       if (idx < 0 || idx >= line.n) return false;
       // Dark first: the chromaticity of dark pixels is noisy, so a robot's black joints or
       // shorts next to its white arm can pass for turf.
       if (line.luma(idx) < dark_luma_) return false;
-      if (color_.isField(line.at(idx))) return true;
+      if (color_.isField(line.at(idx))) return turfBeside(line, idx, dir, beside, paint_luma);
     }
     return false;
+  }
+
+  /// At least half of the `count` px from `from` on are turf or as bright as the line itself
+  /// (`paint_luma`: another line meeting this one at a junction or crossing).
+  bool turfBeside(const Scanline& line, int from, int dir, int count, int paint_luma) const {
+    int seen = 0, turf = 0;
+    for (int k = 0; k < count; ++k) {
+      const int idx = from + dir * k;
+      if (idx < 0 || idx >= line.n) break;
+      ++seen;
+      const int luma = line.luma(idx);
+      turf += luma >= paint_luma || color_.isField(line.at(idx));
+    }
+    return 2 * turf >= seen;
   }
 
   void reject(const Scanline& line, int peak, SpotRejection reason,
@@ -134,8 +155,11 @@ class SpotScanner {
     }
     const int gap =
         config_.green_gap_px + static_cast<int>(config_.green_gap_width_share * expected + 0.5);
-    if (!greenWithin(line, static_cast<int>(std::floor(left)), -1, gap + 1) ||
-        !greenWithin(line, static_cast<int>(std::ceil(right)), +1, gap + 1)) {
+    const int beside = std::max(config_.min_turf_beside_px,
+                                static_cast<int>(config_.turf_beside_width_share * expected + 0.5));
+    const int paint = peak_luma - threshold_;
+    if (!greenWithin(line, static_cast<int>(std::floor(left)), -1, gap + 1, beside, paint) ||
+        !greenWithin(line, static_cast<int>(std::ceil(right)), +1, gap + 1, beside, paint)) {
       reject(line, peak, SpotRejection::kNotGreenBounded, &LineSpotStats::not_green_bounded);
       return;
     }

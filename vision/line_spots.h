@@ -12,21 +12,29 @@
 namespace houghloc {
 
 struct LineSpotConfig {
-  double min_contrast = 18.0;       ///< luma (0-255) a line must rise above the turf on both sides
-  double noise_contrast = 3.5;      ///< ... and at least this many turf-texture sigmas
-  double min_width_ratio = 0.4;     ///< measured / expected width; worn or anti-aliased lines
+  double min_contrast = 18.0;   ///< luma (0-255) a line must rise above the turf on both sides
+  double noise_contrast = 3.5;  ///< ... and at least this many turf noise sigmas: the
+                                ///< field's luma sigma, but at most ...
+  double max_sigma_over_texture = 2.0;  ///< ... this many texture sigmas (FieldColor): turf that
+                                        ///< varies much more over the image than between
+                                        ///< neighbours varies with the light (gradients,
+                                        ///< vignetting, shadows), which a 2-px rise does not see
+  double min_width_ratio = 0.4;         ///< measured / expected width; worn or anti-aliased lines
   double max_width_ratio = 1.7;     ///< above: robots, feet, ball, posts (the other scan direction
                                     ///< catches lines crossing this one obliquely)
   double width_tolerance_px = 2.0;  ///< added to the allowed width: blur, anti-aliasing
   int green_gap_px = 3;             ///< green must appear within this many px beyond each edge
-  double green_gap_width_share = 0.3;  ///< ... plus this share of the expected width
-  double dark_luma_ratio = 0.6;        ///< a non-turf pixel darker than this share of the turf's
-                                       ///< median luma between edge and turf rejects the spot
-  double max_edge_ramp_px = 8.0;       ///< an edge ramping from peak to turf over more than this
-                                       ///< (px; blur and motion blur stay below) ...
-  double max_edge_ramp_ratio = 0.2;    ///< ... and this share of the expected width is no paint
-                                       ///< but the shading of a round white bar (the goal frame
-                                       ///< lying on the ground)
+  double green_gap_width_share = 0.3;    ///< ... plus this share of the expected width
+  int min_turf_beside_px = 3;            ///< beyond the first turf pixel on each side, at least
+                                         ///< half of this many px must be turf too ...
+  double turf_beside_width_share = 0.5;  ///< ... or of this share of the expected width
+  double dark_luma_ratio = 0.6;          ///< a non-turf pixel darker than this share of the turf's
+                                         ///< median luma between edge and turf rejects the spot
+  double max_edge_ramp_px = 8.0;         ///< an edge ramping from peak to turf over more than this
+                                         ///< (px; blur and motion blur stay below) ...
+  double max_edge_ramp_ratio = 0.2;      ///< ... and this share of the expected width is no paint
+                                         ///< but the shading of a round white bar (the goal frame
+                                         ///< lying on the ground)
   bool keep_rejected = false;  ///< list rejected candidates in LineSpotStats (overlays; slower)
 };
 

@@ -35,10 +35,10 @@ RealFolderSummary summarizeRealFolder(const std::string& data_dir, const std::st
     if (lines == "yes" && o.points == 0) {
       const FieldColor& c = o.diagnostics.field_color;
       char colour[96];
-      std::snprintf(colour, sizeof colour, " (field r %.2f g %.2f radius %.2f share %.2f sigma %.0f)",
-                    c.r, c.g, c.radius, c.field_share, c.luma_sigma);
-      s.yes_empty_images.push_back(o.label.image + ": " + frameRejectionName(o.rejection) +
-                                   colour);
+      std::snprintf(colour, sizeof colour,
+                    " (field r %.2f g %.2f radius %.2f share %.2f texture sigma %.0f)", c.r, c.g,
+                    c.radius, c.field_share, c.texture_sigma);
+      s.yes_empty_images.push_back(o.label.image + ": " + frameRejectionName(o.rejection) + colour);
     }
     if (!o.label.has_mask) continue;
     const fs::path mask =
