@@ -149,8 +149,8 @@ TEST(RealGroundTruthFrames, PointToMapDistanceAndGoalLineAtTheRecordedPose) {
   // the pitch corrector off) every top frame meets 0.10 m: see RealGroundTruthGlobalOnly below.
   // Bounds: the measured medians (docs/vision.md) plus about 5 %.
   const std::map<std::string, double> bound_m = {
-      {"black1_point1_top", 0.27}, {"black1_point4_top", 0.25}, {"black1_point5_top", 0.46},
-      {"red1_punt1_top", 0.32},    {"red1_punt2_top", 0.32},    {"red1_punt4_top", 0.36},
+      {"black1_point1_top", 0.25}, {"black1_point4_top", 0.25}, {"black1_point5_top", 0.46},
+      {"red1_punt1_top", 0.32},    {"red1_punt2_top", 0.32},    {"red1_punt4_top", 0.45},
       {"red1_punt2_bottom", 0.22},  // bottom camera, 22 points at 0.5-1.5 m
   };
   for (const GroundTruthFrameReport& r : physarFrames()) {
@@ -165,9 +165,9 @@ TEST(RealGroundTruthFrames, PointToMapDistanceAndGoalLineAtTheRecordedPose) {
 TEST(RealGroundTruthFrames, VisibleLineCoverageAtTheRecordedPose) {
   REQUIRE_REAL_DATA();
   // Share of the map's line samples within 5 m in view with a point within 0.15 m, over the
-  // seven frames (measured 0.248, the column scan 0.425; black1_point4_top has 15 points, all
-  // beside the lines at the recorded pitch, so 0 there). The far samples are missed for the pitch
-  // bias above.
+  // seven frames (measured 0.272, the column scan 0.425; black1_point4_top's 36 points lie
+  // beside the lines at the recorded pitch, 0.05 there). The far samples are missed for the
+  // pitch bias above.
   long visible = 0, covered = 0, baseline_covered = 0;
   for (const GroundTruthFrameReport& r : physarFrames()) {
     visible += r.houghloc.visible_samples;
@@ -178,7 +178,7 @@ TEST(RealGroundTruthFrames, VisibleLineCoverageAtTheRecordedPose) {
   const double coverage = static_cast<double>(covered) / visible;
   std::printf("coverage over the seven frames: %.3f (%ld of %ld samples), baseline %.3f\n",
               coverage, covered, visible, static_cast<double>(baseline_covered) / visible);
-  EXPECT_GE(coverage, 0.23);
+  EXPECT_GE(coverage, 0.25);
 }
 
 std::vector<GlobalCheckFrame> globalCheck(bool add_fit_dpitch, bool pose_correction) {
@@ -198,13 +198,13 @@ int hits(const std::vector<GlobalCheckFrame>& frames) {
 TEST(RealGroundTruthGlobalOnly, FitDpitchWithoutThePitchCorrectorMeetsTheTargets) {
   REQUIRE_REAL_DATA();
   // The camera pose the images want (cam_pitch + fit_dpitch) and the vision's pitch/roll
-  // corrector off (on top of fit_dpitch it applies a further +3.3 deg pitch, -1.7 deg roll).
+  // corrector off.
   const std::vector<GlobalCheckFrame> frames = globalCheck(true, false);
   printGlobalCheck("physar_nao_top, camera pitch + fit_dpitch, pitch corrector off", frames);
   ASSERT_EQ(frames.size(), 6u);
-  EXPECT_GE(hits(frames), 4);  // the issue's >= 4 of 6 (measured 4)
+  EXPECT_GE(hits(frames), 4);  // the issue's >= 4 of 6 (measured 5)
   for (const GlobalCheckFrame& f : frames) {
-    EXPECT_LE(f.metrics.median_distance_m, 0.10) << f.image;  // measured 0.007-0.069
+    EXPECT_LE(f.metrics.median_distance_m, 0.10) << f.image;  // measured 0.030-0.069
     EXPECT_EQ(f.metrics.beyond_goal, 0) << f.image;
   }
 }
@@ -212,15 +212,19 @@ TEST(RealGroundTruthGlobalOnly, FitDpitchWithoutThePitchCorrectorMeetsTheTargets
 TEST(RealGroundTruthGlobalOnly, FitDpitchWithTheDefaultConfig) {
   REQUIRE_REAL_DATA();
   // As houghloc-offline --global-only runs a copy of the folder with cam_pitch + fit_dpitch:
-  // the corrector pools the folder's frames, becomes significant after the black1 spots and
-  // over-corrects the red1 ones (their medians 0.17-0.50 m), so 2 of 6 (measured).
+  // the corrector pools the folder's frames and applies +0.4 deg pitch, +0.6 deg roll by the
+  // end (significant from the red1 spots on); measured 6 of 6, medians 0.019-0.069 m. Hits lie
+  // 0.01-0.14 m from the truth, so one may fall out with a small change: 5 asserted.
   const std::vector<GlobalCheckFrame> frames = globalCheck(true, true);
   printGlobalCheck("physar_nao_top, camera pitch + fit_dpitch, default config", frames);
   ASSERT_EQ(frames.size(), 6u);
-  EXPECT_GE(hits(frames), 2);
+  EXPECT_GE(hits(frames), 5);
+  for (const GlobalCheckFrame& f : frames) {
+    EXPECT_LE(f.metrics.median_distance_m, 0.10) << f.image;
+  }
 }
 // At the recorded poses the target of 4 of 6 is not met: 0 of 6, the nearest hypotheses
-// 0.38-1.12 m off, because the points lie up to 1 m beside the map (see above);
+// 0.18-1.12 m off, because the points lie up to 1 m beside the map (see above);
 // houghloc-real-report prints that check beside these two.
 
 }  // namespace
