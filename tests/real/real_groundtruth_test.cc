@@ -1,4 +1,4 @@
-// Issue 16: the real frames with a ground-truth field pose (../shared/data/real, physar_nao_top:
+// The real frames with a ground-truth field pose (../shared/data/real, physar_nao_top:
 // six spots, physar_nao_bottom: one with lines). First the measures on synthetic input with an
 // independent expectation, then what the vision and --global-only meet on the real frames, each
 // figure printed beside the naive column-scan baseline's.

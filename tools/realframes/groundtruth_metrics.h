@@ -9,11 +9,11 @@
 
 namespace houghloc {
 
-/// How a frame's ground points are scored against the map at a ground-truth field pose (issue 16:
-/// the real frames with a groundtruth.csv pose).
+/// How a frame's ground points are scored against the map at a ground-truth field pose (the
+/// real frames with a groundtruth.csv pose).
 struct GroundTruthMetricsConfig {
-  double beyond_goal_margin_m =
-      0.1;                       ///< a point with |x| > half length + this is beyond a goal line
+  /// A point with |x| > half length + this is beyond a goal line.
+  double beyond_goal_margin_m = 0.1;
   double sample_step_m = 0.05;   ///< map lines and arcs are sampled this often for coverage
   double max_range_m = 5.0;      ///< samples farther from the robot are not counted
   double found_radius_m = 0.15;  ///< a sample with a point this close is covered
