@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
@@ -65,6 +66,38 @@ INSTANTIATE_TEST_SUITE_P(Light, FieldColorLight,
                                            cv::Vec3d(1.3, 1.0, 0.75),   // cold light
                                            cv::Vec3d(0.6, 0.6, 0.6),    // under-exposed
                                            cv::Vec3d(1.5, 1.5, 1.5)));  // over-exposed
+
+/// Turf with independent Gaussian noise of `noise` grey levels per channel, lit from 1.0 on the
+/// left down to `darkest` on the right (a gradient across the columns only).
+cv::Mat noisyTurf(double noise, double darkest) {
+  cv::Mat image(240, 320, CV_8UC3);
+  cv::RNG rng(11);
+  for (int v = 0; v < image.rows; ++v) {
+    for (int u = 0; u < image.cols; ++u) {
+      const double light = 1.0 - (1.0 - darkest) * u / (image.cols - 1);
+      for (int c = 0; c < 3; ++c) {
+        const double base = cv::Vec3d(60, 170, 70)[c] * light;
+        image.at<cv::Vec3b>(v, u)[c] = cv::saturate_cast<uchar>(base + rng.gaussian(noise));
+      }
+    }
+  }
+  return image;
+}
+
+TEST(FieldColor, TextureSigmaIsTheNoiseWithoutTheLight) {
+  // Luma = (B + 2G + R) / 4 of independent channel noise: sqrt(1 + 4 + 1) / 4 x the noise.
+  const double noise = 6.0, luma_noise = std::sqrt(6.0) / 4.0 * noise;  // 3.67 grey levels
+  const FieldColor even = estimateFieldColor(noisyTurf(noise, 1.0), std::vector<int>(320, 0));
+  ASSERT_TRUE(even.valid);
+  EXPECT_NEAR(even.texture_sigma, luma_noise, 0.25 * luma_noise);
+  EXPECT_NEAR(even.luma_sigma, luma_noise, 0.25 * luma_noise);
+  // Lit from 100 % down to 40 % across the image: the whole-image spread is the light, the
+  // spread between neighbours in a column (the same light) stays the noise.
+  const FieldColor lit = estimateFieldColor(noisyTurf(noise, 0.4), std::vector<int>(320, 0));
+  ASSERT_TRUE(lit.valid);
+  EXPECT_NEAR(lit.texture_sigma, luma_noise, 0.25 * luma_noise);
+  EXPECT_GT(lit.luma_sigma, 4.0 * lit.texture_sigma);
+}
 
 TEST(FieldColor, NoFieldInAGreyImage) {
   cv::Mat grey(120, 160, CV_8UC3, cv::Scalar(128, 128, 128));
