@@ -7,6 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "field_models/standard_fields.h"
+#include "localization/gaussian_pose.h"
 #include "tools/recording/csv.h"
 #include "tools/recording/recording.h"
 
@@ -109,14 +110,14 @@ std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_d
     r.t_us = f.t_us;
     r.truth = *truth;
     r.points = static_cast<int>(seen.vision.ground.points.size());
-    const Pose2 mirrored(-truth->x, -truth->y, truth->theta + M_PI);
+    const Pose2 twin = mirrored(*truth);
     r.nearest_m = std::numeric_limits<double>::quiet_NaN();
     r.nearest_heading_rad = std::numeric_limits<double>::quiet_NaN();
     for (const PoseHypothesis& h : located.global) {
       if (h.kind == HypothesisKind::kHeadingOnly) continue;  // no position (as --global-only)
       const Pose2& pose = h.field_T_robot;
       if (r.hit_rank < 0 && within(pose, *truth, check)) r.hit_rank = r.hypotheses;
-      if (r.mirror_hit_rank < 0 && within(pose, mirrored, check)) r.mirror_hit_rank = r.hypotheses;
+      if (r.mirror_hit_rank < 0 && within(pose, twin, check)) r.mirror_hit_rank = r.hypotheses;
       const double d = (pose.translation() - truth->translation()).norm();
       if (std::isnan(r.nearest_m) || d < r.nearest_m) {
         r.nearest_m = d;
@@ -124,10 +125,9 @@ std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_d
       }
       ++r.hypotheses;
     }
-    std::vector<Eigen::Vector2d> points;
-    for (const GroundPoint& p : seen.vision.ground.points) points.push_back(p.p_robot);
     const CameraModel camera(recording.intrinsicsFor(f), frame.robot_T_camera);
-    r.metrics = groundTruthMetrics(*field, *truth, camera, points);
+    r.metrics =
+        groundTruthMetrics(*field, *truth, camera, robotFramePoints(seen.vision.ground.points));
     out.push_back(std::move(r));
   }
   return out;

@@ -21,13 +21,6 @@ std::vector<Eigen::Vector2f> pixelsOf(const std::vector<GroundPoint>& points) {
   return out;
 }
 
-std::vector<Eigen::Vector2d> groundOf(const std::vector<GroundPoint>& points) {
-  std::vector<Eigen::Vector2d> out;
-  out.reserve(points.size());
-  for (const GroundPoint& p : points) out.push_back(p.p_robot);
-  return out;
-}
-
 VisionConfig configFor(const std::string& folder, const VisionConfig& base) {
   VisionConfig config = base;
   const FieldModel field = makeStandardField(realFolderStandard(folder));
@@ -40,6 +33,13 @@ VisionConfig configFor(const std::string& folder, const VisionConfig& base) {
 }
 
 }  // namespace
+
+std::vector<Eigen::Vector2d> robotFramePoints(const std::vector<GroundPoint>& points) {
+  std::vector<Eigen::Vector2d> out;
+  out.reserve(points.size());
+  for (const GroundPoint& p : points) out.push_back(p.p_robot);
+  return out;
+}
 
 std::vector<RealFrameLabel> readRealIndex(const std::string& data_dir) {
   const CsvTable table = CsvTable::read((fs::path(data_dir) / "index.csv").string());
@@ -98,7 +98,7 @@ std::vector<RealFrameOutcome> runRealFolder(const std::string& data_dir,
     outcome.label.t_us = frame.t_us;
     outcome.points = static_cast<int>(result.ground.points.size());
     outcome.point_pixels = pixelsOf(result.ground.points);
-    outcome.points_robot = groundOf(result.ground.points);
+    outcome.points_robot = robotFramePoints(result.ground.points);
     outcome.diagnostics = result.diagnostics;
     outcome.rejection = classifyFrame(result);
     // The naive reference, projected like houghloc's spots with the recorded pose.
@@ -107,7 +107,7 @@ std::vector<RealFrameOutcome> runRealFolder(const std::string& data_dir,
                      config.projection);
     outcome.baseline_points = static_cast<int>(baseline.size());
     outcome.baseline_pixels = pixelsOf(baseline);
-    outcome.baseline_robot = groundOf(baseline);
+    outcome.baseline_robot = robotFramePoints(baseline);
     outcomes.push_back(std::move(outcome));
   }
   return outcomes;

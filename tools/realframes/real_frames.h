@@ -10,6 +10,9 @@
 
 namespace houghloc {
 
+/// The points' positions in the robot frame (m), in their order.
+std::vector<Eigen::Vector2d> robotFramePoints(const std::vector<GroundPoint>& points);
+
 /// One row of the real set's index.csv: whether the frame shows field lines (judged by eye).
 struct RealFrameLabel {
   std::string folder, image;
