@@ -12,6 +12,11 @@ struct GroundPoint {
   double weight = 1.0;                                ///< relative confidence, > 0
   Eigen::Vector2f pixel = Eigen::Vector2f::Zero();    ///< source pixel (u, v), distorted image
   int camera_id = 0;
+  /// How p_robot moves when the camera's recorded roll (column 0) and pitch (column 1) are off
+  /// (DESIGN §3 Pose3 angles), m/rad: a pitch error moves far points along their rays by
+  /// (range^2 + height^2) / height times the angle. Lets localization tell a tilted camera from
+  /// a moved robot. Zero when unknown (no tilt is then inferred from the point).
+  Eigen::Matrix2d tilt_jacobian = Eigen::Matrix2d::Zero();
 };
 
 /// A closed polygon on the ground in the robot frame (m), vertices in order.

@@ -103,7 +103,10 @@ ConfigSection updateSection(PointUpdateConfig& c) {
                     HL_MEMBER(c, search_min_sigma_m),
                     HL_MEMBER(c, search_step_m),
                     HL_MEMBER(c, search_sigmas),
-                    HL_MEMBER(c, search_max_starts)};
+                    HL_MEMBER(c, search_max_starts),
+                    HL_MEMBER(c, pitch_sigma_rad),
+                    HL_MEMBER(c, roll_sigma_rad),
+                    HL_MEMBER(c, tilt_min_gain)};
   return section;
 }
 

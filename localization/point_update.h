@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <vector>
 
 #include "field_models/ground_points.h"
@@ -47,6 +48,17 @@ struct PointUpdateConfig {
   double search_step_m = 0.1;        ///< m; well inside the ~0.25 m basin of one start
   double search_sigmas = 3.0;        ///< search half-width in prior std
   int search_max_starts = 61;        ///< at most this many starts (+-3 m at 0.1 m)
+  /// The camera's recorded pitch and roll may be off by about this much (an IMU bias, a leaning
+  /// body, a head joint that slipped; a 2 deg pitch error moves a point 2 m away by 0.3 m), rad,
+  /// std; 0: the recorded angle is taken as exact. A frame the recorded pose explains poorly
+  /// (mean per-point log-likelihood below -tilt_min_gain) is fitted again with the tilt as a
+  /// nuisance of the pose (points carry GroundPoint::tilt_jacobian), and that fit is kept when
+  /// it explains the points by tilt_min_gain better: a tilted camera then shifts no pose that
+  /// odometry holds, and the hypothesis where the robot is keeps explaining the points. The
+  /// tilt is the frame's own; one that stays is the CameraPoseCorrector's to remove.
+  double pitch_sigma_rad = 0.0;  ///< off by default: docs/tracking.md "Camera tilt"
+  double roll_sigma_rad = 0.0;
+  double tilt_min_gain = 0.5;  ///< mean per-point log-likelihood
 };
 
 struct PointUpdateResult {
@@ -59,6 +71,9 @@ struct PointUpdateResult {
   double mean_log_likelihood = 0.0;
   int iterations = 0;
   bool corrected = false;  ///< the posterior differs from the prior
+  /// The frame's camera (roll, pitch) error fitted with the pose (PointUpdateConfig::
+  /// pitch_sigma_rad, roll_sigma_rad), rad.
+  Eigen::Vector2d tilt = Eigen::Vector2d::Zero();
 };
 
 PointUpdateResult updateWithGroundPoints(const GaussianPose& prior,

@@ -1,5 +1,6 @@
 #include "vision/ground_projection.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <unordered_set>
@@ -17,6 +18,41 @@ std::vector<SpotRay> spotRays(const CameraModel& camera, const std::vector<LineS
     rays.push_back({ray_camera, spot.pixel, spot.vertical_scan});
   }
   return rays;
+}
+
+namespace {
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return m;
+}
+
+}  // namespace
+
+GroundProjector::GroundProjector(const Pose3& robot_T_camera)
+    : robot_R_camera_(robot_T_camera.rotation()), origin_(robot_T_camera.translation()) {
+  // R = Rz(yaw) Ry(pitch) Rx(roll) (Pose3); d/da of a rotation by a about axis e is R(a) [e]x.
+  const Eigen::Matrix3d yaw(Eigen::AngleAxisd(robot_T_camera.yaw, Eigen::Vector3d::UnitZ()));
+  const Eigen::Matrix3d pitch(Eigen::AngleAxisd(robot_T_camera.pitch, Eigen::Vector3d::UnitY()));
+  const Eigen::Matrix3d roll(Eigen::AngleAxisd(robot_T_camera.roll, Eigen::Vector3d::UnitX()));
+  d_rotation_d_roll_ = robot_R_camera_ * skew(Eigen::Vector3d::UnitX());
+  d_rotation_d_pitch_ = yaw * pitch * skew(Eigen::Vector3d::UnitY()) * roll;
+}
+
+Eigen::Matrix2d GroundProjector::tiltJacobian(const Eigen::Vector3d& ray_camera) const {
+  const Eigen::Vector3d ray = robot_R_camera_ * ray_camera;
+  Eigen::Matrix2d jacobian = Eigen::Matrix2d::Zero();
+  if (!(ray.z() < 0.0) || origin_.z() <= 0.0) return jacobian;
+  // p = o + s ray with s = -o_z / ray_z: dp = s d(ray) + ds ray, ds = o_z d(ray_z) / ray_z^2.
+  const double s = -origin_.z() / ray.z();
+  const Eigen::Vector3d d_ray[2] = {d_rotation_d_roll_ * ray_camera,
+                                    d_rotation_d_pitch_ * ray_camera};
+  for (int k = 0; k < 2; ++k) {
+    const double ds = origin_.z() * d_ray[k].z() / (ray.z() * ray.z());
+    jacobian.col(k) = s * d_ray[k].head<2>() + ds * ray.head<2>();
+  }
+  return jacobian;
 }
 
 GroundProjectionConfig unlimitedProjection() {
@@ -73,6 +109,7 @@ std::vector<GroundPoint> projectSpots(const std::vector<SpotRay>& rays, const Po
     point.weight = 1.0 / (1.0 + r * r);
     point.pixel = ray.pixel;
     point.camera_id = camera_id;
+    point.tilt_jacobian = projector.tiltJacobian(ray.ray_camera);
     points.push_back(point);
   }
   return points;

@@ -48,16 +48,20 @@ GroundProjectionConfig unlimitedProjection();
 /// rotation (Pose3::rotation() costs six sin/cos), for loops over many rays.
 class GroundProjector {
  public:
-  explicit GroundProjector(const Pose3& robot_T_camera)
-      : robot_R_camera_(robot_T_camera.rotation()), origin_(robot_T_camera.translation()) {}
+  explicit GroundProjector(const Pose3& robot_T_camera);
 
   /// The ground point (robot frame) the ray hits; none above the horizon, at grazing angles or
   /// beyond the range limit.
   std::optional<Eigen::Vector2d> project(const Eigen::Vector3d& ray_camera,
                                          const GroundProjectionConfig& config) const;
 
+  /// d(ground point) / d(roll, pitch) of the pose (GroundPoint::tilt_jacobian) for a ray that
+  /// hits the ground; zero for one that does not.
+  Eigen::Matrix2d tiltJacobian(const Eigen::Vector3d& ray_camera) const;
+
  private:
   Eigen::Matrix3d robot_R_camera_;
+  Eigen::Matrix3d d_rotation_d_roll_, d_rotation_d_pitch_;
   Eigen::Vector3d origin_;
 };
 

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "field_models/field_distance.h"
@@ -131,6 +133,81 @@ TEST(PointUpdate, WidePriorAlongALineFindsTheCrossingLines) {
   const PointUpdateResult narrow_off =
       updateWithGroundPoints(prior, points.points, index, no_search);
   EXPECT_EQ(narrow.posterior.mean.x, narrow_off.posterior.mean.x);
+}
+
+/// Where a camera-frame ray (x forward, y left, z up) meets the ground for a camera 0.5 m up,
+/// rolled and pitched down by the given angles (Pose3's Ry(pitch) Rx(roll), yaw 0).
+Eigen::Vector2d groundOfRay(const Eigen::Vector3d& ray_camera, double roll, double pitch) {
+  const double height = 0.5;
+  const Eigen::Vector3d ray = Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                              (Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()) * ray_camera);
+  return (height / -ray.z()) * ray.head<2>();
+}
+
+/// The SPL lines seen from `truth` by that camera, truly pitched 20 deg down, as a recorded
+/// pose pitched `pitch_error` further projects them, each point with its tilt Jacobian under
+/// the recorded pose (central differences).
+std::vector<GroundPoint> tiltedView(const FieldModel& field, const Pose2& truth,
+                                    double pitch_error) {
+  const double pitch = 20.0 * M_PI / 180.0, h = 1e-6;
+  std::vector<GroundPoint> points;
+  for (double t = 0.0; t <= 1.0; t += 0.01) {
+    for (const Segment2& s : field.segments) {
+      const Eigen::Vector2d g = truth.inverse().transform(s.a + t * (s.b - s.a));
+      if (g.x() < 0.4 || g.norm() > 4.0 || std::abs(std::atan2(g.y(), g.x())) > 0.5) continue;
+      const Eigen::Vector3d ray_camera =
+          Eigen::AngleAxisd(-pitch, Eigen::Vector3d::UnitY()) * Eigen::Vector3d(g.x(), g.y(), -0.5);
+      const double recorded = pitch + pitch_error;
+      GroundPoint point;
+      point.p_robot = groundOfRay(ray_camera, 0.0, recorded);
+      point.tilt_jacobian.col(0) =
+          (groundOfRay(ray_camera, h, recorded) - groundOfRay(ray_camera, -h, recorded)) / (2 * h);
+      point.tilt_jacobian.col(1) = (groundOfRay(ray_camera, 0.0, recorded + h) -
+                                    groundOfRay(ray_camera, 0.0, recorded - h)) /
+                                   (2 * h);
+      points.push_back(point);
+    }
+  }
+  return points;
+}
+
+// A camera pitched 2 deg off its recorded pose moves points 2-4 m away by 0.3-0.8 m. The pose
+// that odometry holds to a few centimetres must stay there: the fitted tilt explains the points.
+TEST(PointUpdate, TiltedCameraIsFittedAsTiltNotAsAMovedRobot) {
+  const FieldModel field = makeStandardField("spl");
+  const FeatureIndex index(field);
+  const Pose2 truth(-2.0, -1.0, M_PI);  // facing the own goal: goal area and penalty area
+  const double pitch_error = 2.0 * M_PI / 180.0;
+  const std::vector<GroundPoint> tilted = tiltedView(field, truth, pitch_error);
+  const std::vector<GroundPoint> exact = tiltedView(field, truth, 0.0);
+  ASSERT_GT(tilted.size(), 100u);
+  GaussianPose prior;
+  prior.mean = truth;
+  prior.covariance = Eigen::Vector3d(0.03 * 0.03, 0.03 * 0.03, 0.02 * 0.02).asDiagonal();
+
+  PointUpdateConfig tilt;
+  tilt.pitch_sigma_rad = 2.0 * M_PI / 180.0;
+  const PointUpdateResult fitted = updateWithGroundPoints(prior, tilted, index, tilt);
+  EXPECT_LT((fitted.posterior.mean.translation() - truth.translation()).norm(), 0.01);
+  EXPECT_LT(std::abs(angleDifference(fitted.posterior.mean.theta, truth.theta)), 0.003);
+  // The recorded pitch is 2 deg too far down: the fit pitches it back up (by 2.4 deg: the
+  // points move linearly with the tilt in the model, and a 4 m point's true shift is smaller).
+  EXPECT_NEAR(fitted.tilt.y(), -pitch_error, 0.25 * pitch_error);
+  EXPECT_NEAR(fitted.tilt.x(), 0.0, 0.1 * pitch_error);
+  const PointUpdateResult clean = updateWithGroundPoints(prior, exact, index, tilt);
+  EXPECT_GT(fitted.mean_log_likelihood, clean.mean_log_likelihood - 0.05);
+  EXPECT_NEAR(clean.tilt.norm(), 0.0, 1e-3);
+
+  const PointUpdateResult rigid = updateWithGroundPoints(prior, tilted, index, {});  // default
+  EXPECT_EQ(rigid.tilt, Eigen::Vector2d::Zero());
+  EXPECT_LT(rigid.mean_log_likelihood, fitted.mean_log_likelihood - 0.3);
+  std::printf(
+      "tilted camera: pose off by %.4f m, %.3f deg; fitted pitch %.2f deg; mean "
+      "log-likelihood %.3f (exact camera %.3f, without the tilt %.3f)\n",
+      (fitted.posterior.mean.translation() - truth.translation()).norm(),
+      angleDifference(fitted.posterior.mean.theta, truth.theta) * 180.0 / M_PI,
+      fitted.tilt.y() * 180.0 / M_PI, fitted.mean_log_likelihood, clean.mean_log_likelihood,
+      rigid.mean_log_likelihood);
 }
 
 class FeatureIndexExact : public ::testing::TestWithParam<const char*> {};
