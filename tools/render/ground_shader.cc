@@ -7,10 +7,12 @@
 namespace houghloc {
 namespace {
 
-// Colours, BGR on a 0..255 scale, as a NAO camera sees them under hall lighting.
-const Eigen::Vector3f kTurf(52.0f, 128.0f, 62.0f);
-const Eigen::Vector3f kTurfSheen(70.0f, 150.0f, 110.0f);  ///< turf seen at grazing angles
-const Eigen::Vector3f kPaint(222.0f, 228.0f, 228.0f);
+// Colours, BGR on a 0..255 scale, as a NAO camera sees them under hall lighting. The turf and
+// the paint are the scenario's (SceneConfig::turf_bgr, paint_bgr).
+const Eigen::Vector3f kTurf(52.0f, 128.0f, 62.0f);        ///< SceneConfig's default turf_bgr
+const Eigen::Vector3f kTurfSheen(70.0f, 150.0f, 110.0f);  ///< that turf seen at grazing angles
+/// Other carpets seen at grazing angles: the pile's lighter sides, without a colour shift.
+constexpr float kCarpetSheenGain = 1.3f;
 const Eigen::Vector3f kWood(92.0f, 142.0f, 190.0f);
 const Eigen::Vector3f kConcrete(140.0f, 142.0f, 145.0f);
 
@@ -42,6 +44,10 @@ RoomBox makeRoomBox(const FieldModel& field, const SceneConfig& scene) {
 GroundShader::GroundShader(const FieldModel& field, const SceneConfig& scene, const RoomBox& room,
                            std::uint32_t seed)
     : field_(field), scene_(scene), room_(room) {
+  turf_ = Eigen::Vector3d(scene.turf_bgr[0], scene.turf_bgr[1], scene.turf_bgr[2]).cast<float>();
+  sheen_ = turf_ == kTurf ? kTurfSheen : Eigen::Vector3f(kCarpetSheenGain * turf_);
+  paint_ =
+      Eigen::Vector3d(scene.paint_bgr[0], scene.paint_bgr[1], scene.paint_bgr[2]).cast<float>();
   blades_ = NoiseTexture(512, 0.0015, 0.6, seed * 7u + 6u);  // single blades, close up
   fine_ = NoiseTexture(512, 0.006, 0.7, seed * 7u + 1u);     // turf fibres
   blotch_ = NoiseTexture(256, 0.03, 2.5, seed * 7u + 2u);    // tufts, dirt
@@ -134,7 +140,7 @@ Eigen::Vector3f GroundShader::turf(const Eigen::Vector2f& g, const Footprint& fp
   }
   // Seen flat, the pile shows its lighter sides.
   const float sheen = smoothstep(0.5f, 0.05f, -view_z);
-  Eigen::Vector3f colour = tex * ((1.0f - 0.5f * sheen) * kTurf + 0.5f * sheen * kTurfSheen);
+  Eigen::Vector3f colour = tex * ((1.0f - 0.5f * sheen) * turf_ + 0.5f * sheen * sheen_);
   // Field lines: true width, ragged turf edges, worn and dirty in places.
   // Ragged at the scale of single blades, straight from afar.
   const float rough =
@@ -148,7 +154,7 @@ Eigen::Vector3f GroundShader::turf(const Eigen::Vector2f& g, const Footprint& fp
       alpha *= 1.0f - 0.45f * worn * (0.8f + 0.2f * fine);
     }
     const float dirt = scene_.turf_texture ? 0.04f * blotch_.sample(g.y(), g.x(), size) : 0.0f;
-    const Eigen::Vector3f paint_colour = kPaint * (1.0f + 0.03f * fine + dirt);
+    const Eigen::Vector3f paint_colour = paint_ * (1.0f + 0.03f * fine + dirt);
     colour = (1.0f - alpha) * colour + alpha * paint_colour;
   }
   return colour;

@@ -52,6 +52,7 @@ class GroundShader {
   FieldModel field_;
   SceneConfig scene_;
   RoomBox room_;
+  Eigen::Vector3f turf_, sheen_, paint_;  ///< carpet, carpet at grazing angles, line paint (BGR)
   LinePainter field_lines_, court_lines_;
   std::vector<Eigen::Vector3f> court_colours_;
   NoiseTexture blades_, fine_, blotch_, large_;

@@ -63,6 +63,11 @@ Eigen::Vector3f RoomShader::ceiling(float x, float y) const {
 
 Eigen::Vector3f RoomShader::shade(const Eigen::Vector3f& o, const Eigen::Vector3f& d,
                                   float* t_out) const {
+  return static_cast<float>(scene_.hall_brightness) * unlit(o, d, t_out);
+}
+
+Eigen::Vector3f RoomShader::unlit(const Eigen::Vector3f& o, const Eigen::Vector3f& d,
+                                  float* t_out) const {
   // The ray starts inside the box: the exit is the nearest positive plane crossing.
   float t = 1e6f;
   int hit = -1;

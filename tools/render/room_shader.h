@@ -28,6 +28,9 @@ class RoomShader {
     Eigen::Vector3f bgr;
     float frame = 0.0f;  ///< dark frame width (white boards), m
   };
+  /// shade() before SceneConfig::hall_brightness.
+  Eigen::Vector3f unlit(const Eigen::Vector3f& origin, const Eigen::Vector3f& dir,
+                        float* t_out) const;
   Eigen::Vector3f wall(int wall, float s, float z) const;
   Eigen::Vector3f ceiling(float x, float y) const;
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "tools/render/faults.h"
 
@@ -56,10 +58,19 @@ void validateScenario(const Scenario& s) {
   require(c.people >= 0 && c.people <= 100, "scene.people: must be in [0, 100]");
   require(c.random_robots >= 0 && c.random_robots <= 20, "scene.random_robots: must be in [0, 20]");
   require(c.room_margin_m >= 0.5, "scene.room_margin_m: must be at least 0.5");
+  for (const auto& [name, bgr] : {std::pair{"turf_bgr", c.turf_bgr}, {"paint_bgr", c.paint_bgr}}) {
+    for (double v : bgr) {
+      require(v >= 0.0 && v <= 255.0,
+              std::string("scene.") + name + ": components must be in [0, 255]");
+    }
+  }
+  require(c.hall_brightness >= 0.0 && c.hall_brightness <= 4.0,
+          "scene.hall_brightness: must be in [0, 4]");
   const SensorConfig& n = s.sensor;
   require(n.exposure > 0.0, "sensor.exposure: must be positive");
   require(n.color_temperature_k >= 1500.0 && n.color_temperature_k <= 15000.0,
           "sensor.color_temperature_k: must be in [1500, 15000]");
+  require(n.tint >= -1.0 && n.tint <= 1.0, "sensor.tint: must be in [-1, 1]");
   for (size_t i = 0; i < n.light_changes.size(); ++i) {
     const LightChange& l = n.light_changes[i];
     const std::string at = "sensor.light_changes[" + std::to_string(i) + "]";

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -104,6 +105,12 @@ struct SceneConfig {
   double room_margin_m = 3.0;   ///< floor between the carpet edge and the walls
   double robot_height_m = 0.0;  ///< 0: from the field (SPL 0.58, kid 0.8, adult 1.4)
   int random_robots = 0;        ///< extra robots walking around, placed by the seed
+  /// Carpet colour (BGR, 0..255 before lighting): the default is a saturated green turf; real
+  /// carpets are also yellowish, teal, desaturated, grey or black (docs/render.md).
+  std::array<double, 3> turf_bgr = {52.0, 128.0, 62.0};
+  /// Line paint or tape colour (BGR): dull or tinted tape lowers the lines' contrast.
+  std::array<double, 3> paint_bgr = {222.0, 228.0, 228.0};
+  double hall_brightness = 1.0;  ///< gain on walls and ceiling (dark curtains, bright windows)
 };
 
 struct LightChange {
@@ -117,6 +124,9 @@ struct LightChange {
 struct SensorConfig {
   double exposure = 1.0;                ///< brightness gain
   double color_temperature_k = 5500.0;  ///< light colour the white balance does not cancel
+  /// Green (+) or magenta (-) cast the white balance does not cancel, -1..1 (green gain
+  /// exp(0.25 tint)): fluorescent and LED hall lights.
+  double tint = 0.0;
   std::vector<LightChange> light_changes;
   double vignetting = 0.25;     ///< brightness loss in the image corners (fraction)
   double optics_blur_px = 0.6;  ///< Gaussian sigma of the lens blur

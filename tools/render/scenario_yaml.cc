@@ -120,6 +120,14 @@ void readOdometry(YamlMap& m, OdometryConfig& o) {
   m.read("slip_factor", o.slip_factor);
 }
 
+/// [b, g, r] when `key` is present.
+void readColour(YamlMap& m, const char* key, std::array<double, 3>& bgr) {
+  const cv::FileNode node = m.child(key);
+  if (node.empty()) return;
+  const std::vector<double> v = numbers(node, m.name(key), 3, 3);
+  bgr = {v[0], v[1], v[2]};
+}
+
 void readScene(YamlMap& m, SceneConfig& s) {
   m.read("turf_texture", s.turf_texture);
   m.read("mowing_stripes", s.mowing_stripes);
@@ -141,6 +149,9 @@ void readScene(YamlMap& m, SceneConfig& s) {
   m.read("room_margin_m", s.room_margin_m);
   m.read("robot_height_m", s.robot_height_m);
   m.read("random_robots", s.random_robots);
+  readColour(m, "turf_bgr", s.turf_bgr);
+  readColour(m, "paint_bgr", s.paint_bgr);
+  m.read("hall_brightness", s.hall_brightness);
 }
 
 void readLightChange(YamlMap& m, LightChange& l) {
@@ -153,6 +164,7 @@ void readLightChange(YamlMap& m, LightChange& l) {
 void readSensor(YamlMap& m, SensorConfig& s) {
   m.read("exposure", s.exposure);
   m.read("color_temperature_k", s.color_temperature_k);
+  m.read("tint", s.tint);
   forEachMap(m, "light_changes", [&](YamlMap& item) {
     LightChange l;
     readLightChange(item, l);

@@ -26,10 +26,11 @@ cv::Mat1f motionKernel(const Eigen::Vector2d& motion) {
 }
 
 /// Channel gains of light of a colour temperature the white balance was not set for
-/// (warmer light: more red, less blue).
-cv::Vec3f whiteBalance(double kelvin) {
+/// (warmer light: more red, less blue) and of a green-magenta tint (SensorConfig::tint).
+cv::Vec3f whiteBalance(double kelvin, double tint) {
   const double k = std::log(kelvin / 5500.0);
-  return cv::Vec3f(static_cast<float>(std::exp(0.45 * k)), 1.0f,
+  return cv::Vec3f(static_cast<float>(std::exp(0.45 * k)),
+                   static_cast<float>(std::exp(0.25 * tint)),
                    static_cast<float>(std::exp(-0.35 * k)));
 }
 
@@ -80,7 +81,7 @@ cv::Mat3b SensorModel::apply(const cv::Mat3f& scene, const ExposureState& exposu
   cv::RNG rng(noise_seed);
   const size_t pool_mask = noise_pool_.size() - 1;  // a power of two
   size_t next = rng.next() & pool_mask;
-  const cv::Vec3f wb = whiteBalance(exposure.color_temperature_k);
+  const cv::Vec3f wb = whiteBalance(exposure.color_temperature_k, config_.tint);
   const float gain = static_cast<float>(exposure.gain);
   const float sigma0 = static_cast<float>(config_.noise_sigma);
   const float shot = static_cast<float>(config_.shot_noise);

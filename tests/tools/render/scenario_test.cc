@@ -40,6 +40,10 @@ TEST(ScenarioTest, AllOptionsExampleLoads) {
   EXPECT_EQ(s.hints.size(), 3u);
   ASSERT_TRUE(s.camera_mount.has_value());
   EXPECT_NEAR(s.camera_mount->z, 0.51, 1e-12);
+  EXPECT_EQ(s.scene.turf_bgr[2], 78.0);
+  EXPECT_EQ(s.scene.paint_bgr[0], 210.0);
+  EXPECT_EQ(s.scene.hall_brightness, 0.9);
+  EXPECT_EQ(s.sensor.tint, 0.1);
 }
 
 TEST(ScenarioTest, BuiltInNameAsString) {
@@ -66,6 +70,26 @@ TEST(ScenarioTest, WrongTypesAndRangesAreNamed) {
             std::string::npos);
   EXPECT_NE(loadError("trajectory:\n  waypoints:\n    - [1, 2]\n").find("waypoints[0]"),
             std::string::npos);
+}
+
+TEST(ScenarioTest, CarpetPaintHallAndTintAreChecked) {
+  EXPECT_NE(
+      loadError("scene:\n  turf_bgr: [90, 95]\n").find("scene.turf_bgr: expected a list of 3"),
+      std::string::npos);
+  EXPECT_NE(loadError("scene:\n  turf_bgr: [90, 95, 300]\n").find("scene.turf_bgr: components"),
+            std::string::npos);
+  EXPECT_NE(loadError("scene:\n  paint_bgr: [-1, 200, 200]\n").find("scene.paint_bgr"),
+            std::string::npos);
+  EXPECT_NE(loadError("scene:\n  hall_brightness: 5\n").find("scene.hall_brightness"),
+            std::string::npos);
+  EXPECT_NE(loadError("sensor:\n  tint: -1.5\n").find("sensor.tint: must be in [-1, 1]"),
+            std::string::npos);
+  EXPECT_NE(loadError("scene:\n  turf_colour: [1, 2, 3]\n").find("scene.turf_colour: unknown key"),
+            std::string::npos);
+  const Scenario s = loadScenario(writeTemp("grey.yaml", "scene:\n  turf_bgr: [96, 100, 100]\n"));
+  EXPECT_EQ(s.scene.turf_bgr[0], 96.0);
+  EXPECT_EQ(s.scene.paint_bgr[0], 222.0);  // untouched defaults
+  EXPECT_EQ(s.sensor.tint, 0.0);
 }
 
 }  // namespace
