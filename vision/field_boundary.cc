@@ -3,17 +3,20 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vision/pixel_access.h"
+
 namespace houghloc {
 namespace {
 
 /// Top of the first run of min_green_run green samples in column u, refined to the pixel;
 /// negative when the column has no such run.
-float greenTop(const cv::Mat& bgr, const FieldColor& color, int u, int start_row,
+template <typename Pixels>
+float greenTop(const Pixels& pixels, const FieldColor& color, int u, int start_row,
                const FieldBoundaryConfig& config) {
   int run = 0;
   int run_start = -1;
-  for (int v = std::max(0, start_row); v < bgr.rows; v += config.row_step_px) {
-    if (color.isField(bgr.ptr<uchar>(v) + 3 * u)) {
+  for (int v = std::max(0, start_row); v < pixels.rows(); v += config.row_step_px) {
+    if (color.isField(pixels.at(u, v).data())) {
       if (run++ == 0) run_start = v;
       if (run >= config.min_green_run) break;
     } else {
@@ -23,7 +26,7 @@ float greenTop(const cv::Mat& bgr, const FieldColor& color, int u, int start_row
   if (run < config.min_green_run) return -1.f;
   int top = run_start;
   while (top > std::max(0, start_row) && top > run_start - config.row_step_px + 1 &&
-         color.isField(bgr.ptr<uchar>(top - 1) + 3 * u)) {
+         color.isField(pixels.at(u, top - 1).data())) {
     --top;
   }
   return static_cast<float>(top);
@@ -70,30 +73,33 @@ bool dropSpikes(const std::vector<Eigen::Vector2f>& hull, std::vector<Eigen::Vec
 /// body's edges. A field line running into the feet joins their non-turf run along the bottom
 /// row but reaches much higher: each run's columns are capped at its median height (plus a
 /// margin), so the line above the feet is still scanned.
-std::vector<float> bodyRows(const cv::Mat& bgr, const FieldColor& color,
+template <typename Pixels>
+std::vector<float> bodyRows(const Pixels& pixels, const FieldColor& color,
                             const FieldBoundaryConfig& config) {
   const int step = std::max(1, config.column_step_px);
+  const int rows = pixels.rows(), cols = pixels.cols();
   // Per column the id of the wide non-turf run of the bottom row it lies in (-1: none).
-  std::vector<int> run_of(static_cast<size_t>(bgr.cols), -1);
-  const uchar* bottom = bgr.ptr<uchar>(bgr.rows - 1);
-  const int min_width = static_cast<int>(config.min_body_width_share * bgr.cols);
+  std::vector<int> run_of(static_cast<size_t>(cols), -1);
+  std::vector<uchar> buffer;
+  const BgrRun bottom = pixels.rowRun(0, rows - 1, cols, &buffer);
+  const int min_width = static_cast<int>(config.min_body_width_share * cols);
   int runs = 0;
-  for (int u = 0; u < bgr.cols;) {
+  for (int u = 0; u < cols;) {
     const int begin = u;
-    while (u < bgr.cols && !color.isField(bottom + 3 * u)) ++u;
+    while (u < cols && !color.isField(bottom.first + bottom.stride * u)) ++u;
     if (u - begin >= std::max(1, min_width))
       std::fill(run_of.begin() + begin, run_of.begin() + u, runs++);
     if (u == begin) ++u;
   }
   std::vector<int> extents, sample_run;
   std::vector<std::vector<int>> run_extents(static_cast<size_t>(runs));
-  for (int u = 0; u < bgr.cols; u += step) {
+  for (int u = 0; u < cols; u += step) {
     const int run = run_of[static_cast<size_t>(u)];
     int extent = 0;
     if (run >= 0) {
-      int v = bgr.rows - 1;
-      while (v >= 0 && !color.isField(bgr.ptr<uchar>(v) + 3 * u)) --v;
-      extent = bgr.rows - 1 - v;
+      int v = rows - 1;
+      while (v >= 0 && !color.isField(pixels.at(u, v).data())) --v;
+      extent = rows - 1 - v;
       run_extents[static_cast<size_t>(run)].push_back(extent);
     }
     extents.push_back(extent);
@@ -108,39 +114,52 @@ std::vector<float> bodyRows(const cv::Mat& bgr, const FieldColor& color,
       const double cap = config.body_height_tolerance * e[e.size() / 2] + config.row_step_px;
       extent = std::min(extent, static_cast<int>(cap));
     }
-    sampled.push_back(extent >= config.min_body_px ? static_cast<float>(bgr.rows - extent)
-                                                   : static_cast<float>(bgr.rows));
+    sampled.push_back(extent >= config.min_body_px ? static_cast<float>(rows - extent)
+                                                   : static_cast<float>(rows));
   }
-  std::vector<float> rows(static_cast<size_t>(bgr.cols));
-  for (int u = 0; u < bgr.cols; ++u) {
+  std::vector<float> body_rows(static_cast<size_t>(cols));
+  for (int u = 0; u < cols; ++u) {
     const size_t left = static_cast<size_t>(u / step);
     const size_t right = std::min(sampled.size() - 1, left + 1);
-    rows[static_cast<size_t>(u)] = std::min(sampled[left], sampled[right]);
+    body_rows[static_cast<size_t>(u)] = std::min(sampled[left], sampled[right]);
   }
-  return rows;
+  return body_rows;
+}
+
+/// The sampled green tops: every column_step_px-th column and the last one.
+template <typename Pixels>
+std::vector<Eigen::Vector2f> greenTops(const Pixels& pixels, const FieldColor& color,
+                                       const std::vector<int>& start_rows,
+                                       const FieldBoundaryConfig& config) {
+  std::vector<Eigen::Vector2f> tops;
+  const int cols = pixels.cols();
+  const int step = std::max(1, config.column_step_px);
+  for (int u = 0; u < cols; u += step) {
+    const int col = std::min(u, cols - 1);
+    const float top = greenTop(pixels, color, col, start_rows[static_cast<size_t>(col)], config);
+    if (top >= 0.f) tops.emplace_back(static_cast<float>(col), top);
+  }
+  if (cols - 1 > (cols - 1) / step * step) {
+    const int col = cols - 1;
+    const float top = greenTop(pixels, color, col, start_rows[static_cast<size_t>(col)], config);
+    if (top >= 0.f) tops.emplace_back(static_cast<float>(col), top);
+  }
+  return tops;
 }
 
 }  // namespace
 
-FieldBoundary detectFieldBoundary(const cv::Mat& bgr, const FieldColor& color,
+FieldBoundary detectFieldBoundary(const cv::Mat& image, const FieldColor& color,
                                   const std::vector<int>& start_rows,
                                   const FieldBoundaryConfig& config) {
   FieldBoundary boundary;
-  boundary.rows.assign(static_cast<size_t>(bgr.cols), static_cast<float>(bgr.rows));
+  boundary.rows.assign(static_cast<size_t>(image.cols), static_cast<float>(image.rows));
   boundary.body_rows = boundary.rows;
   if (!color.valid) return boundary;
-  boundary.body_rows = bodyRows(bgr, color, config);
-  const int step = std::max(1, config.column_step_px);
-  for (int u = 0; u < bgr.cols; u += step) {
-    const int col = std::min(u, bgr.cols - 1);
-    const float top = greenTop(bgr, color, col, start_rows[static_cast<size_t>(col)], config);
-    if (top >= 0.f) boundary.green_tops.emplace_back(static_cast<float>(col), top);
-  }
-  if (bgr.cols - 1 > (bgr.cols - 1) / step * step) {
-    const int col = bgr.cols - 1;
-    const float top = greenTop(bgr, color, col, start_rows[static_cast<size_t>(col)], config);
-    if (top >= 0.f) boundary.green_tops.emplace_back(static_cast<float>(col), top);
-  }
+  visitPixels(image, [&](const auto& pixels) {
+    boundary.body_rows = bodyRows(pixels, color, config);
+    boundary.green_tops = greenTops(pixels, color, start_rows, config);
+  });
   std::vector<Eigen::Vector2f> tops = boundary.green_tops;
   if (tops.size() < 2) return boundary;
   boundary.hull = upperHull(tops);
@@ -150,7 +169,7 @@ FieldBoundary detectFieldBoundary(const cv::Mat& bgr, const FieldColor& color,
   }
   // Interpolate between hull vertices; extend the outer edges to the image border.
   const std::vector<Eigen::Vector2f>& hull = boundary.hull;
-  for (int u = 0; u < bgr.cols; ++u) {
+  for (int u = 0; u < image.cols; ++u) {
     size_t i = 1;
     while (i + 1 < hull.size() && hull[i].x() < u) ++i;
     const Eigen::Vector2f& a = hull[i - 1];
@@ -163,7 +182,7 @@ FieldBoundary detectFieldBoundary(const cv::Mat& bgr, const FieldColor& color,
     if (u > hull.back().x()) v = hull.back().y();
     boundary.rows[static_cast<size_t>(u)] =
         std::clamp(std::max(v, static_cast<float>(start_rows[static_cast<size_t>(u)])), 0.f,
-                   static_cast<float>(bgr.rows));
+                   static_cast<float>(image.rows));
   }
   boundary.found = true;
   return boundary;

@@ -44,7 +44,8 @@ struct FieldBoundary {
 /// lens distortion), and robots or other occluders only push single tops down, so the hull
 /// ignores them; isolated tops far above their neighbours are dropped as green clutter beyond
 /// the field.
-FieldBoundary detectFieldBoundary(const cv::Mat& bgr, const FieldColor& color,
+/// image: BGR8 or YUYV (pixel_access.h); YUYV pixels are decoded where sampled.
+FieldBoundary detectFieldBoundary(const cv::Mat& image, const FieldColor& color,
                                   const std::vector<int>& start_rows,
                                   const FieldBoundaryConfig& config = {});
 

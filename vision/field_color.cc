@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vision/pixel_access.h"
+
 namespace houghloc {
 namespace {
 
@@ -30,17 +32,19 @@ float quantile(std::vector<float>* values, double q) {
 
 float greyDistance(cv::Point2f c) { return std::hypot(c.x - 1.f / 3.f, c.y - 1.f / 3.f); }
 
-std::vector<Sample> collectSamples(const cv::Mat& bgr, const std::vector<int>& start_rows,
+template <typename Pixels>
+std::vector<Sample> collectSamples(const Pixels& pixels, const std::vector<int>& start_rows,
                                    const FieldColorConfig& config) {
   std::vector<Sample> samples;
   const int step = std::max(1, config.sample_step_px);
-  const int bottom_row = bgr.rows - static_cast<int>(config.bottom_band_share * bgr.rows);
-  for (int u = step / 2; u < bgr.cols; u += step) {
+  const int rows = pixels.rows();
+  const int bottom_row = rows - static_cast<int>(config.bottom_band_share * rows);
+  for (int u = step / 2; u < pixels.cols(); u += step) {
     const int top = std::max(0, start_rows[static_cast<size_t>(u)]);
     int below = -1;  // luma of the sample one step below in this column, -1: none
-    for (int v = bgr.rows - 1 - step / 2; v >= top; v -= step) {
-      const uchar* p = bgr.ptr<uchar>(v) + 3 * u;
-      const int luma = FieldColor::luma(p);
+    for (int v = rows - 1 - step / 2; v >= top; v -= step) {
+      const BgrBytes p = pixels.at(u, v);
+      const int luma = FieldColor::luma(p.data());
       if (luma < config.min_luma) {
         below = -1;
         continue;
@@ -141,10 +145,11 @@ cv::Point2f turfPeak(const std::vector<Sample>& samples, const FieldColorConfig&
 
 }  // namespace
 
-FieldColor estimateFieldColor(const cv::Mat& bgr, const std::vector<int>& start_rows,
+FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& start_rows,
                               const FieldColorConfig& config, const FieldColor* previous) {
   FieldColor color;
-  const std::vector<Sample> samples = collectSamples(bgr, start_rows, config);
+  const std::vector<Sample> samples = visitPixels(
+      image, [&](const auto& pixels) { return collectSamples(pixels, start_rows, config); });
   if (samples.size() < 10) return color;
   cv::Point2f centre = turfPeak(samples, config, previous);
 

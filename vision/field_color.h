@@ -72,7 +72,8 @@ struct FieldColor {
 /// thresholds need tuning on a new field or under new light and a wall, floor or robot larger
 /// than the visible turf does not win. previous: the same camera's last valid estimate, kept
 /// when this frame still supports it (one odd frame does not lose the field).
-FieldColor estimateFieldColor(const cv::Mat& bgr, const std::vector<int>& start_rows,
+/// image: BGR8 or YUYV (pixel_access.h); YUYV pixels are decoded where sampled.
+FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& start_rows,
                               const FieldColorConfig& config = {},
                               const FieldColor* previous = nullptr);
 

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vision/pixel_access.h"
+
 namespace houghloc {
 namespace {
 
-/// One scanline: n BGR pixels starting at `first`, `stride` bytes apart; (u0, v0) + i * (du, dv)
-/// is pixel i's position.
+/// One scanline: n BGR pixels starting at `first`, `stride` bytes apart (in a BGR8 image or a
+/// decoded copy of a YUYV image's pixels); (u0, v0) + i * (du, dv) is pixel i's position.
 struct Scanline {
   const uchar* first;
   long stride;
@@ -175,37 +177,47 @@ class SpotScanner {
   int dark_luma_ = 0;
 };
 
+/// Scans the grid's columns, then its rows, each stretch below the boundary and above the
+/// robot's body.
+template <typename Pixels>
+void scanGrid(const Pixels& pixels, const FieldBoundary& boundary, const ScanGrid& grid,
+              const SpotScanner& scanner) {
+  std::vector<uchar> buffer;  // one scanline's decoded pixels (formats not read in place)
+  for (const ScanGrid::Column& column : grid.columns) {
+    const int end = std::min(column.v_end, static_cast<int>(boundary.bodyRowAt(column.u)));
+    const int n = end - column.v_begin;
+    if (n < 4) continue;
+    const BgrRun run = pixels.columnRun(column.u, column.v_begin, n, &buffer);
+    scanner.scan({run.first, run.stride, n, column.u, column.v_begin, 0, 1});
+  }
+  for (int v : grid.rows) {
+    // Scan each stretch of the row that lies below the boundary.
+    int u = 0;
+    while (u < pixels.cols()) {
+      const auto field = [&](int col) {
+        return boundary.rowAt(col) <= v && v < boundary.bodyRowAt(col);
+      };
+      while (u < pixels.cols() && !field(u)) ++u;
+      const int begin = u;
+      while (u < pixels.cols() && field(u)) ++u;
+      if (u - begin >= 4) {
+        const BgrRun run = pixels.rowRun(begin, v, u - begin, &buffer);
+        scanner.scan({run.first, run.stride, u - begin, begin, v, 1, 0});
+      }
+    }
+  }
+}
+
 }  // namespace
 
-std::vector<LineSpot> detectLineSpots(const cv::Mat& bgr, const FieldColor& color,
+std::vector<LineSpot> detectLineSpots(const cv::Mat& image, const FieldColor& color,
                                       const FieldBoundary& boundary, const ScanGrid& grid,
                                       const LineWidthModel& widths, const LineSpotConfig& config,
                                       LineSpotStats* stats) {
   std::vector<LineSpot> spots;
   if (!color.valid || !boundary.found) return spots;
   const SpotScanner scanner(color, widths, config, &spots, stats);
-  for (const ScanGrid::Column& column : grid.columns) {
-    const int end = std::min(column.v_end, static_cast<int>(boundary.bodyRowAt(column.u)));
-    const int n = end - column.v_begin;
-    if (n < 4) continue;
-    scanner.scan({bgr.ptr<uchar>(column.v_begin) + 3 * column.u, static_cast<long>(bgr.step[0]), n,
-                  column.u, column.v_begin, 0, 1});
-  }
-  for (int v : grid.rows) {
-    // Scan each stretch of the row that lies below the boundary.
-    int u = 0;
-    while (u < bgr.cols) {
-      const auto field = [&](int col) {
-        return boundary.rowAt(col) <= v && v < boundary.bodyRowAt(col);
-      };
-      while (u < bgr.cols && !field(u)) ++u;
-      const int begin = u;
-      while (u < bgr.cols && field(u)) ++u;
-      if (u - begin >= 4) {
-        scanner.scan({bgr.ptr<uchar>(v) + 3 * begin, 3, u - begin, begin, v, 1, 0});
-      }
-    }
-  }
+  visitPixels(image, [&](const auto& pixels) { scanGrid(pixels, boundary, grid, scanner); });
   return spots;
 }
 

@@ -68,7 +68,8 @@ struct LineSpotStats {
 
 /// Scans the grid's rows and columns below the field boundary for bright, low-saturation runs with
 /// turf on both sides whose half-maximum width matches the expected line width there.
-std::vector<LineSpot> detectLineSpots(const cv::Mat& bgr, const FieldColor& color,
+/// image: BGR8 or YUYV (pixel_access.h); YUYV pixels are decoded per scanline.
+std::vector<LineSpot> detectLineSpots(const cv::Mat& image, const FieldColor& color,
                                       const FieldBoundary& boundary, const ScanGrid& grid,
                                       const LineWidthModel& widths, const LineSpotConfig& config,
                                       LineSpotStats* stats = nullptr);

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "vision/boundary_gap.h"
-#include "vision/image_conversion.h"
+#include "vision/pixel_access.h"
 
 namespace houghloc {
 namespace {
@@ -55,7 +55,8 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   VisionResult result;
   VisionDiagnostics& diag = result.diagnostics;
   result.ground.t_us = t_us;
-  const cv::Mat bgr = toBgr(image, bgr_buffer_);
+  // The stages read BGR8 in place and decode only the YUYV pixels they read (pixel_access.h).
+  checkPixelLayout(image);
 
   // 1. Horizon from the (corrected) camera pose.
   const Pose3 pose = corrector_->corrected(robot_T_camera);
@@ -65,7 +66,7 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   const std::vector<int> start_rows = scanStartRows(camera_, config_.horizon);
   // 2-3. Field colour from this frame, then the field boundary.
   const bool remembered = field_color_age_ <= config_.field_color.memory_frames;
-  diag.field_color = estimateFieldColor(bgr, start_rows, config_.field_color,
+  diag.field_color = estimateFieldColor(image, start_rows, config_.field_color,
                                         remembered ? &last_field_color_ : nullptr);
   if (diag.field_color.valid) {
     last_field_color_ = diag.field_color;
@@ -73,13 +74,13 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   } else if (field_color_age_ <= config_.field_color.memory_frames) {
     ++field_color_age_;
   }
-  result.boundary = detectFieldBoundary(bgr, diag.field_color, start_rows, config_.boundary);
+  result.boundary = detectFieldBoundary(image, diag.field_color, start_rows, config_.boundary);
   diag.time_color_ms = msSince(&step);
 
   // 4. Line spots on a distance-adapted scan grid below the boundary.
   const LineWidthModel widths(camera_, config_.line_width_m, config_.line_width);
   const ScanGrid grid = makeScanGrid(camera_, widths, result.boundary, config_.scan_grid);
-  result.spots = detectLineSpots(bgr, diag.field_color, result.boundary, grid, widths,
+  result.spots = detectLineSpots(image, diag.field_color, result.boundary, grid, widths,
                                  config_.spots, &diag.spot_stats);
   diag.num_spots = static_cast<int>(result.spots.size());
   diag.time_spots_ms = msSince(&step);

@@ -57,7 +57,7 @@ struct VisionDiagnostics {
       Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
   int pose_correction_map_inliers = 0;  ///< this frame's points matched to the map (0: none)
   double time_total_ms = 0.0;
-  double time_color_ms = 0.0;     ///< conversion, horizon, field colour, boundary
+  double time_color_ms = 0.0;     ///< horizon, field colour, boundary
   double time_spots_ms = 0.0;     ///< width model, scan grid, spot detection
   double time_project_ms = 0.0;   ///< rays, projection, visible region
   double time_features_ms = 0.0;  ///< segments, circles, pose correction
@@ -81,7 +81,8 @@ class VisionPipeline {
   explicit VisionPipeline(const CameraIntrinsics& intrinsics, const VisionConfig& config = {},
                           int camera_id = 0);
 
-  /// image: BGR8 (CV_8UC3) or YUYV (CV_8UC2) of the intrinsics' size. Throws
+  /// image: BGR8 (CV_8UC3) or YUYV (CV_8UC2, even width) of the intrinsics' size; YUYV is not
+  /// converted as a whole, each stage decodes the pixels it reads (pixel_access.h). Throws
   /// std::invalid_argument for another size or type and for a non-finite camera pose.
   /// field_T_robot: where the localizer puts the robot at this frame (its track, predicted
   /// with odometry), when it has one; with setFieldModel it lets the pitch/roll corrector match
@@ -114,7 +115,6 @@ class VisionPipeline {
   std::shared_ptr<CameraPoseCorrector> corrector_;  ///< shared by sharePoseCorrection()
   FieldColor last_field_color_;  ///< this camera's last valid field colour (frame memory)
   int field_color_age_ = std::numeric_limits<int>::max() / 2;  ///< frames since it
-  cv::Mat bgr_buffer_;  ///< YUYV input converted, reused from frame to frame
 };
 
 }  // namespace houghloc

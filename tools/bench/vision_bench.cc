@@ -1,5 +1,7 @@
 // houghloc-bench-vision: the vision pipeline against a stock-OpenCV baseline on the same rendered
-// frames, one core; prints the time ratio and both methods' precision/recall (issue 5).
+// frames, one core; prints the time ratio and both methods' precision/recall (issue 5). Then the
+// pipeline on the frames as YUYV (read in place) against the same frames decoded to BGR8, and
+// against converting each YUYV frame to BGR8 before running the pipeline.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -14,6 +16,7 @@
 
 #include "tools/offline/vision_metrics.h"
 #include "tools/recording/recording.h"
+#include "vision/image_conversion.h"
 #include "vision/vision_pipeline.h"
 #include "vision_baseline.h"
 
@@ -91,10 +94,60 @@ void BM_OpenCvBaseline(benchmark::State& state, BenchSet& (*get)()) {
   });
 }
 
+/// The set's frames as a NAO camera delivers them (YUYV) and that YUYV decoded to BGR8, so both
+/// formats hold the same pixels.
+struct YuyvFrames {
+  std::vector<cv::Mat> yuyv, bgr;
+};
+
+const YuyvFrames& yuyvFrames(const BenchSet& set) {
+  static std::map<std::string, YuyvFrames> frames;
+  auto it = frames.find(set.name);
+  if (it != frames.end()) return it->second;
+  YuyvFrames out;
+  for (const cv::Mat& image : set.images) {
+    out.yuyv.push_back(bgrToYuyv(image));
+    out.bgr.push_back(yuyvToBgr(out.yuyv.back()));
+  }
+  return frames.emplace(set.name, std::move(out)).first->second;
+}
+
+enum class YuyvPath { kInPlace, kDecodedBgr, kConvertFirst };
+
+/// kInPlace: process() on the YUYV frame; kDecodedBgr: on its BGR8 decode (made before timing);
+/// kConvertFirst: toBgr() of the YUYV frame, then process() on that, timed together.
+void BM_VisionYuyv(benchmark::State& state, BenchSet& (*get)(), YuyvPath path) {
+  BenchSet& set = get();
+  const YuyvFrames& frames = yuyvFrames(set);
+  VisionPipeline pipeline(set.recording.intrinsicsFor(set.recording.frames[0]), configFor(set));
+  cv::Mat buffer;
+  size_t i = 0;
+  for (auto _ : state) {
+    const size_t k = i++ % frames.yuyv.size();
+    const Pose3& pose = set.recording.frames[k].robot_T_camera;
+    const cv::Mat image = path == YuyvPath::kInPlace      ? frames.yuyv[k]
+                          : path == YuyvPath::kDecodedBgr ? frames.bgr[k]
+                                                          : toBgr(frames.yuyv[k], buffer);
+    benchmark::DoNotOptimize(pipeline.process(image, pose).ground.size());
+  }
+}
+
 BENCHMARK_CAPTURE(BM_VisionPipeline, 640x480, &vga)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_OpenCvBaseline, 640x480, &vga)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionPipeline, 1280x720, &hd)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_OpenCvBaseline, 1280x720, &hd)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionYuyv, in_place / 640x480, &vga, YuyvPath::kInPlace)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionYuyv, decoded_bgr / 640x480, &vga, YuyvPath::kDecodedBgr)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionYuyv, convert_first / 640x480, &vga, YuyvPath::kConvertFirst)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionYuyv, in_place / 1280x720, &hd, YuyvPath::kInPlace)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionYuyv, decoded_bgr / 1280x720, &hd, YuyvPath::kDecodedBgr)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionYuyv, convert_first / 1280x720, &hd, YuyvPath::kConvertFirst)
+    ->Unit(benchmark::kMillisecond);
 
 /// Keeps each run's time per iteration (ms) for the ratio table.
 class CollectingReporter : public benchmark::ConsoleReporter {
@@ -125,6 +178,22 @@ VisionMetrics quality(BenchSet& set, bool baseline) {
   return metrics.result();
 }
 
+/// Time per frame of the three YUYV paths and the ratios to reading YUYV in place (> 1: in
+/// place is faster).
+void printYuyvTable(const std::map<std::string, double>& ms) {
+  std::printf("\n%-10s %12s %14s %16s %14s %16s\n", "frames", "YUYV ms", "BGR decode ms",
+              "convert+BGR ms", "BGR / YUYV", "convert / YUYV");
+  for (const std::string size : {"640x480", "1280x720"}) {
+    const auto yuyv = ms.find("BM_VisionYuyv/in_place/" + size);
+    const auto bgr = ms.find("BM_VisionYuyv/decoded_bgr/" + size);
+    const auto convert = ms.find("BM_VisionYuyv/convert_first/" + size);
+    if (yuyv == ms.end() || bgr == ms.end() || convert == ms.end()) continue;
+    std::printf("%-10s %12.3f %14.3f %16.3f %14.3f %16.3f\n", size.c_str(), yuyv->second,
+                bgr->second, convert->second, bgr->second / yuyv->second,
+                convert->second / yuyv->second);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -150,6 +219,7 @@ int main(int argc, char** argv) {
     std::printf("%-10s %14.3f %14.3f %8.2f   %-28s %-28s\n", size.c_str(), ours->second,
                 theirs->second, theirs->second / ours->second, text(a).c_str(), text(b).c_str());
   }
+  printYuyvTable(reporter.ms);
   benchmark::Shutdown();
   return 0;
 }
