@@ -80,13 +80,13 @@ std::vector<float> bodyRows(const Pixels& pixels, const FieldColor& color,
   const int rows = pixels.rows(), cols = pixels.cols();
   // Per column the id of the wide non-turf run of the bottom row it lies in (-1: none).
   std::vector<int> run_of(static_cast<size_t>(cols), -1);
-  std::vector<uchar> buffer;
-  const BgrRun bottom = pixels.rowRun(0, rows - 1, cols, &buffer);
+  RunBuffer buffer;
+  const auto bottom = pixels.rowRun(0, rows - 1, cols, &buffer);
   const int min_width = static_cast<int>(config.min_body_width_share * cols);
   int runs = 0;
   for (int u = 0; u < cols;) {
     const int begin = u;
-    while (u < cols && !color.isField(bottom.first + bottom.stride * u)) ++u;
+    while (u < cols && !color.isField(bottom.at(u))) ++u;
     if (u - begin >= std::max(1, min_width))
       std::fill(run_of.begin() + begin, run_of.begin() + u, runs++);
     if (u == begin) ++u;

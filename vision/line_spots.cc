@@ -8,16 +8,21 @@
 namespace houghloc {
 namespace {
 
-/// One scanline: n BGR pixels starting at `first`, `stride` bytes apart (in a BGR8 image or a
-/// decoded copy of a YUYV image's pixels); (u0, v0) + i * (du, dv) is pixel i's position.
+/// One scanline: n pixels of a run (BgrRun read in place, DecodedRun from a decoding reader);
+/// (u0, v0) + i * (du, dv) is pixel i's position.
+template <typename Run>
 struct Scanline {
-  const uchar* first;
-  long stride;
+  Run run;
   int n;
   int u0, v0, du, dv;
-  const uchar* at(int i) const { return first + stride * i; }
-  int luma(int i) const { return FieldColor::luma(at(i)); }
+  const uchar* at(int i) const { return run.at(i); }
+  int luma(int i) const { return run.luma(i); }
 };
+
+template <typename Run>
+Scanline<Run> scanline(const Run& run, int n, int u0, int v0, int du, int dv) {
+  return {run, n, u0, v0, du, dv};
+}
 
 class SpotScanner {
  public:
@@ -31,7 +36,8 @@ class SpotScanner {
     dark_luma_ = static_cast<int>(config.dark_luma_ratio * color.luma_median);
   }
 
-  void scan(const Scanline& line) const {
+  template <typename Run>
+  void scan(const Scanline<Run>& line) const {
     constexpr int kEdgeGap = 2;  // compare with the pixel two back: tolerates one blurred pixel
     int i = kEdgeGap;
     while (i < line.n) {
@@ -53,7 +59,8 @@ class SpotScanner {
 
  private:
   /// Half-maximum crossing walking from the peak in direction dir, sub-pixel.
-  static float crossing(const Scanline& line, int peak, int dir, float level) {
+  template <typename Run>
+  static float crossing(const Scanline<Run>& line, int peak, int dir, float level) {
     int k = peak;
     while (k + dir >= 0 && k + dir < line.n && line.luma(k + dir) >= level) k += dir;
     if (k + dir < 0 || k + dir >= line.n) return static_cast<float>(k);
@@ -67,7 +74,8 @@ class SpotScanner {
   /// over the steepest two-pixel luma step. Paint ends at a sharp edge (blur and anti-aliasing
   /// spread it over a few px); the shading of a round bar (the goal frame lying on the ground)
   /// fades out over a good part of its width.
-  static float edgeRamp(const Scanline& line, int peak, int dir, int background) {
+  template <typename Run>
+  static float edgeRamp(const Scanline<Run>& line, int peak, int dir, int background) {
     int k = peak, steepest = 0;
     while (k + 2 * dir >= 0 && k + 2 * dir < line.n && line.luma(k) > background) {
       steepest = std::max(steepest, line.luma(k) - line.luma(k + 2 * dir));
@@ -83,7 +91,8 @@ class SpotScanner {
   /// goes on beside it, while the rim of a robot's leg or a ball patch next to a black one is
   /// bounded by a pixel or two that pass for turf (grey, tinted green by the field) and then
   /// by more of the object.
-  bool greenWithin(const Scanline& line, int from, int dir, int count, int beside,
+  template <typename Run>
+  bool greenWithin(const Scanline<Run>& line, int from, int dir, int count, int beside,
                    int paint_luma) const {
     for (int k = 0; k < count; ++k) {
       const int idx = from + dir * k;
@@ -98,7 +107,8 @@ class SpotScanner {
 
   /// At least half of the `count` px from `from` on are turf or as bright as the line itself
   /// (`paint_luma`: another line meeting this one at a junction or crossing).
-  bool turfBeside(const Scanline& line, int from, int dir, int count, int paint_luma) const {
+  template <typename Run>
+  bool turfBeside(const Scanline<Run>& line, int from, int dir, int count, int paint_luma) const {
     int seen = 0, turf = 0;
     for (int k = 0; k < count; ++k) {
       const int idx = from + dir * k;
@@ -110,7 +120,8 @@ class SpotScanner {
     return 2 * turf >= seen;
   }
 
-  void reject(const Scanline& line, int peak, SpotRejection reason,
+  template <typename Run>
+  void reject(const Scanline<Run>& line, int peak, SpotRejection reason,
               int LineSpotStats::*counter) const {
     if (!stats_) return;
     ++(stats_->*counter);
@@ -121,7 +132,8 @@ class SpotScanner {
     }
   }
 
-  void check(const Scanline& line, int before, int peak, int end) const {
+  template <typename Run>
+  void check(const Scanline<Run>& line, int before, int peak, int end) const {
     if (stats_) ++stats_->candidates;
     const int after = std::min(line.n - 1, end + 1);
     const int peak_luma = line.luma(peak);
@@ -182,13 +194,13 @@ class SpotScanner {
 template <typename Pixels>
 void scanGrid(const Pixels& pixels, const FieldBoundary& boundary, const ScanGrid& grid,
               const SpotScanner& scanner) {
-  std::vector<uchar> buffer;  // one scanline's decoded pixels (formats not read in place)
+  RunBuffer buffer;  // one scanline's decoded pixels (formats not read in place)
   for (const ScanGrid::Column& column : grid.columns) {
     const int end = std::min(column.v_end, static_cast<int>(boundary.bodyRowAt(column.u)));
     const int n = end - column.v_begin;
     if (n < 4) continue;
-    const BgrRun run = pixels.columnRun(column.u, column.v_begin, n, &buffer);
-    scanner.scan({run.first, run.stride, n, column.u, column.v_begin, 0, 1});
+    scanner.scan(scanline(pixels.columnRun(column.u, column.v_begin, n, &buffer), n, column.u,
+                          column.v_begin, 0, 1));
   }
   for (int v : grid.rows) {
     // Scan each stretch of the row that lies below the boundary.
@@ -201,8 +213,8 @@ void scanGrid(const Pixels& pixels, const FieldBoundary& boundary, const ScanGri
       const int begin = u;
       while (u < pixels.cols() && field(u)) ++u;
       if (u - begin >= 4) {
-        const BgrRun run = pixels.rowRun(begin, v, u - begin, &buffer);
-        scanner.scan({run.first, run.stride, u - begin, begin, v, 1, 0});
+        scanner.scan(
+            scanline(pixels.rowRun(begin, v, u - begin, &buffer), u - begin, begin, v, 1, 0));
       }
     }
   }

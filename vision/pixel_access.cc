@@ -23,25 +23,31 @@ void decodePairs(const uchar* src, size_t src_step, int pairs, int rows, uchar* 
 
 }  // namespace
 
-BgrRun YuyvPixels::rowRun(int u, int v, int n, std::vector<uchar>* buffer) const {
+DecodedRun YuyvPixels::rowRun(int u, int v, int n, RunBuffer* buffer) const {
   const int first_pair = u / 2, end_pair = (u + n + 1) / 2;
-  buffer->resize(6 * static_cast<size_t>(end_pair - first_pair));
+  buffer->bgr.resize(6 * static_cast<size_t>(end_pair - first_pair));
+  buffer->luma.resize(static_cast<size_t>(n));
   decodePairs(image_.ptr<uchar>(v) + 4 * first_pair, image_.step[0], end_pair - first_pair, 1,
-              buffer->data(), buffer->size());
-  return {buffer->data() + 3 * (u % 2), 3};
+              buffer->bgr.data(), buffer->bgr.size());
+  const uchar* bgr = buffer->bgr.data() + 3 * (u % 2);
+  uchar* luma = buffer->luma.data();
+  for (int k = 0; k < n; ++k) luma[k] = static_cast<uchar>(FieldColor::luma(bgr + 3 * k));
+  return {bgr, luma};
 }
 
-BgrRun YuyvPixels::columnRun(int u, int v, int n, std::vector<uchar>* buffer) const {
+DecodedRun YuyvPixels::columnRun(int u, int v, int n, RunBuffer* buffer) const {
   // One pair per row is too little for OpenCV's decoder (its per-row set-up dominates).
-  buffer->resize(3 * static_cast<size_t>(n));
-  uchar* out = buffer->data();
+  buffer->bgr.resize(3 * static_cast<size_t>(n));
+  buffer->luma.resize(static_cast<size_t>(n));
+  uchar* out = buffer->bgr.data();
   const uchar* pair = image_.ptr<uchar>(v) + 4 * (u / 2);
   const int y_offset = 2 * (u % 2);
   for (int k = 0; k < n; ++k, out += 3, pair += image_.step[0]) {
     const BgrBytes bgr = decodeYuyv(pair[y_offset], pair[1], pair[3]);
     out[0] = bgr[0], out[1] = bgr[1], out[2] = bgr[2];
+    buffer->luma[static_cast<size_t>(k)] = static_cast<uchar>(FieldColor::luma(out));
   }
-  return {buffer->data(), 3};
+  return {buffer->bgr.data(), buffer->luma.data()};
 }
 
 void checkPixelLayout(const cv::Mat& image) {

@@ -5,6 +5,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "vision/field_color.h"
 #include "vision/image_conversion.h"
 
 namespace houghloc {
@@ -12,10 +13,28 @@ namespace houghloc {
 /// One pixel's colour as the vision stages read it: blue, green, red (0-255).
 using BgrBytes = std::array<uchar, 3>;
 
-/// Pixels of one scanline as BGR bytes: pixel i at first + i * stride.
+/// A scanline's pixels read in place from a BGR8 image: pixel i at first + i * stride.
 struct BgrRun {
   const uchar* first = nullptr;
   long stride = 3;  ///< bytes
+
+  const uchar* at(int i) const { return first + stride * i; }
+  int luma(int i) const { return FieldColor::luma(at(i)); }
+};
+
+/// A scanline's pixels decoded into a RunBuffer: BGR bytes, and each pixel's luma computed once
+/// (a scan reads a pixel's luma several times).
+struct DecodedRun {
+  const uchar* bgr = nullptr;    ///< 3 bytes per pixel
+  const uchar* lumas = nullptr;  ///< FieldColor::luma per pixel
+
+  const uchar* at(int i) const { return bgr + 3 * i; }
+  int luma(int i) const { return lumas[i]; }
+};
+
+/// Memory decoded runs live in, reused from scanline to scanline.
+struct RunBuffer {
+  std::vector<uchar> bgr, luma;
 };
 
 /// BGR8 (CV_8UC3) pixels, read in place.
@@ -31,11 +50,11 @@ class Bgr8Pixels {
     return {p[0], p[1], p[2]};
   }
   /// Pixels (u, v) ... (u + n - 1, v), in place (the buffer is not used).
-  BgrRun rowRun(int u, int v, int /*n*/, std::vector<uchar>* /*buffer*/) const {
+  BgrRun rowRun(int u, int v, int /*n*/, RunBuffer* /*buffer*/) const {
     return {image_.ptr<uchar>(v) + 3 * u, 3};
   }
   /// Pixels (u, v) ... (u, v + n - 1), in place (the buffer is not used).
-  BgrRun columnRun(int u, int v, int /*n*/, std::vector<uchar>* /*buffer*/) const {
+  BgrRun columnRun(int u, int v, int /*n*/, RunBuffer* /*buffer*/) const {
     return {image_.ptr<uchar>(v) + 3 * u, static_cast<long>(image_.step[0])};
   }
 
@@ -72,9 +91,9 @@ class YuyvPixels {
     return decodeYuyv(pair[2 * (u & 1)], pair[1], pair[3]);
   }
   /// Pixels (u, v) ... (u + n - 1, v), decoded into `buffer`.
-  BgrRun rowRun(int u, int v, int n, std::vector<uchar>* buffer) const;
+  DecodedRun rowRun(int u, int v, int n, RunBuffer* buffer) const;
   /// Pixels (u, v) ... (u, v + n - 1), decoded into `buffer`.
-  BgrRun columnRun(int u, int v, int n, std::vector<uchar>* buffer) const;
+  DecodedRun columnRun(int u, int v, int n, RunBuffer* buffer) const;
 
  private:
   const cv::Mat& image_;

@@ -47,23 +47,23 @@ TEST(YuyvPixels, RunsHoldTheDecodedPixels) {
   cv::RNG(7).fill(yuyv, cv::RNG::UNIFORM, 0, 256);
   const cv::Mat bgr = yuyvToBgr(yuyv);
   const YuyvPixels pixels(yuyv);
-  std::vector<uchar> buffer;
+  RunBuffer buffer;
   // Odd and even starts: a run may begin with either pixel of a pair.
   for (const int start : {0, 1, 6, 13}) {
     const int n = 11;
-    const BgrRun row = pixels.rowRun(start, 5, n, &buffer);
+    const DecodedRun row = pixels.rowRun(start, 5, n, &buffer);
     for (int k = 0; k < n; ++k) {
-      EXPECT_TRUE(sameBytes(
-          {row.first[k * row.stride], row.first[k * row.stride + 1], row.first[k * row.stride + 2]},
-          bgr.ptr<uchar>(5) + 3 * (start + k)))
+      const uchar* expected = bgr.ptr<uchar>(5) + 3 * (start + k);
+      EXPECT_TRUE(sameBytes({row.at(k)[0], row.at(k)[1], row.at(k)[2]}, expected))
           << "row run from u " << start << ", pixel " << k;
+      EXPECT_EQ(row.luma(k), FieldColor::luma(expected));
     }
-    const BgrRun column = pixels.columnRun(start, 3, n, &buffer);
+    const DecodedRun column = pixels.columnRun(start, 3, n, &buffer);
     for (int k = 0; k < n; ++k) {
-      EXPECT_TRUE(sameBytes({column.first[k * column.stride], column.first[k * column.stride + 1],
-                             column.first[k * column.stride + 2]},
-                            bgr.ptr<uchar>(3 + k) + 3 * start))
+      const uchar* expected = bgr.ptr<uchar>(3 + k) + 3 * start;
+      EXPECT_TRUE(sameBytes({column.at(k)[0], column.at(k)[1], column.at(k)[2]}, expected))
           << "column run at u " << start << ", pixel " << k;
+      EXPECT_EQ(column.luma(k), FieldColor::luma(expected));
     }
   }
 }
