@@ -186,14 +186,20 @@ VisionMetrics quality(BenchSet& set, bool baseline) {
 
 /// CPU time per frame of the three YUYV paths and the ratios to reading YUYV in place (> 1: in
 /// place is faster). CPU rather than wall time: on a shared machine the wall time also counts
-/// the time other processes hold the core.
+/// the time other processes hold the core. Run with --benchmark_repetitions=N
+/// --benchmark_enable_random_interleaving=true so load changes hit the three paths alike.
 void printYuyvTable(const std::map<std::string, double>& ms) {
   std::printf("\n%-10s %12s %14s %16s %14s %16s\n", "frames", "YUYV ms", "BGR8 ms",
               "convert+BGR ms", "BGR / YUYV", "convert / YUYV");
   for (const std::string size : {"640x480", "1280x720"}) {
-    const auto yuyv = ms.find("BM_VisionYuyvInPlace/" + size);
-    const auto bgr = ms.find("BM_VisionYuyvDecoded/" + size);
-    const auto convert = ms.find("BM_VisionYuyvConvertFirst/" + size);
+    // With --benchmark_repetitions the median of the repetitions.
+    const auto find = [&](const std::string& name) {
+      const auto median = ms.find(name + "_median");
+      return median != ms.end() ? median : ms.find(name);
+    };
+    const auto yuyv = find("BM_VisionYuyvInPlace/" + size);
+    const auto bgr = find("BM_VisionYuyvDecoded/" + size);
+    const auto convert = find("BM_VisionYuyvConvertFirst/" + size);
     if (yuyv == ms.end() || bgr == ms.end() || convert == ms.end()) continue;
     std::printf("%-10s %12.3f %14.3f %16.3f %14.3f %16.3f\n", size.c_str(), yuyv->second,
                 bgr->second, convert->second, bgr->second / yuyv->second,
