@@ -23,8 +23,7 @@ void decodePairs(const uchar* src, size_t src_step, int pairs, int rows, uchar* 
 }
 
 /// FieldColor::luma of n BGR pixels, 16 at a time with OpenCV's portable SIMD types where the
-/// target has them (a row run is a few hundred pixels, decoded in well under a microsecond, and
-/// a scalar pass over them would cost as much again).
+/// target has them: a scalar pass costs about as much as OpenCV's vectorised decoding of the row.
 void lumaOfBgr(const uchar* bgr, int n, uchar* luma) {
   int k = 0;
 #if CV_SIMD128

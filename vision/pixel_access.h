@@ -37,7 +37,7 @@ struct RunBuffer {
   std::vector<uchar> bgr, luma;
 };
 
-/// BGR8 (CV_8UC3) pixels, read in place.
+/// BGR8 (CV_8UC3) pixels, read in place. Reads `image`, which must outlive the reader.
 class Bgr8Pixels {
  public:
   explicit Bgr8Pixels(const cv::Mat& image) : image_(image) {}
@@ -68,16 +68,16 @@ class Bgr8Pixels {
 inline BgrBytes decodeYuyv(int y, int cb, int cr) {
   constexpr int kShift = 20;
   constexpr int kCy = 1220542, kCub = 2116026, kCug = -409993, kCvg = -852492, kCvr = 1673527;
-  const int luma = std::max(0, y - 16) * kCy + (1 << (kShift - 1));
+  const int y_term = std::max(0, y - 16) * kCy + (1 << (kShift - 1));  // rounds the shift
   const int du = cb - 128, dv = cr - 128;
   const auto byte = [](int value) { return static_cast<uchar>(std::clamp(value, 0, 255)); };
-  return {byte((luma + kCub * du) >> kShift), byte((luma + kCug * du + kCvg * dv) >> kShift),
-          byte((luma + kCvr * dv) >> kShift)};
+  return {byte((y_term + kCub * du) >> kShift), byte((y_term + kCug * du + kCvg * dv) >> kShift),
+          byte((y_term + kCvr * dv) >> kShift)};
 }
 
 /// YUYV 4:2:2 (CV_8UC2: Y0 Cb Y1 Cr per pixel pair) pixels, decoded to BGR only where a stage
-/// reads them: the stages read a small share of the frame, so converting all of it first
-/// costs more than it saves.
+/// reads them (about a quarter of a frame; docs/vision.md "YUYV input"). Reads `image`, which
+/// must outlive the reader.
 class YuyvPixels {
  public:
   /// Throws std::invalid_argument when the image is not CV_8UC2 or its width is odd.

@@ -43,23 +43,25 @@ TEST(YuyvPixels, DecodesEveryYCbCrLikeOpenCv) {
 }
 
 TEST(YuyvPixels, RunsHoldTheDecodedPixels) {
-  cv::Mat yuyv(24, 40, CV_8UC2);
+  cv::Mat yuyv(24, 64, CV_8UC2);
   cv::RNG(7).fill(yuyv, cv::RNG::UNIFORM, 0, 256);
   const cv::Mat bgr = yuyvToBgr(yuyv);
   const YuyvPixels pixels(yuyv);
   RunBuffer buffer;
-  // Odd and even starts: a run may begin with either pixel of a pair.
+  // Odd and even starts: a run may begin with either pixel of a pair. Rows of 37 px: two
+  // 16-pixel blocks of the vectorised luma and a tail.
   for (const int start : {0, 1, 6, 13}) {
-    const int n = 11;
-    const DecodedRun row = pixels.rowRun(start, 5, n, &buffer);
-    for (int k = 0; k < n; ++k) {
+    const int row_n = 37;
+    const DecodedRun row = pixels.rowRun(start, 5, row_n, &buffer);
+    for (int k = 0; k < row_n; ++k) {
       const uchar* expected = bgr.ptr<uchar>(5) + 3 * (start + k);
       EXPECT_TRUE(sameBytes({row.at(k)[0], row.at(k)[1], row.at(k)[2]}, expected))
           << "row run from u " << start << ", pixel " << k;
       EXPECT_EQ(row.luma(k), FieldColor::luma(expected));
     }
-    const DecodedRun column = pixels.columnRun(start, 3, n, &buffer);
-    for (int k = 0; k < n; ++k) {
+    const int column_n = 11;
+    const DecodedRun column = pixels.columnRun(start, 3, column_n, &buffer);
+    for (int k = 0; k < column_n; ++k) {
       const uchar* expected = bgr.ptr<uchar>(3 + k) + 3 * start;
       EXPECT_TRUE(sameBytes({column.at(k)[0], column.at(k)[1], column.at(k)[2]}, expected))
           << "column run at u " << start << ", pixel " << k;
