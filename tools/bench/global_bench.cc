@@ -5,7 +5,8 @@
 // then a summary of time ratios and success rates side by side: min / median CPU time per
 // field x points (growth with points and with map size), grid-search and step-1 ratios, and the
 // worst frame (median, p99, maximum) over 500 random-pose frames of every field preset.
-// `--benchmark_filter=NONE` prints the summary alone, `--no_summary` leaves it out.
+// `--benchmark_filter=NONE` prints the summary alone, `--no_summary` leaves it out,
+// `--profile=msl/100` or `--profile=worst/msl` only runs locate() on those frames (profiling).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -305,6 +306,16 @@ void printSummary() {
       t_cv / std::max(t_ours, 1e-12));
 }
 
+/// Frame `k` of the worst-frame set of a field (printWorstFrames).
+SyntheticFrame worstFrame(const std::string& name, int k, std::mt19937_64& rng) {
+  static const std::vector<std::string> views = {"nao-top", "nao-bottom", "kid-wide", "adult"};
+  SyntheticConfig config;
+  config.view = viewModel(views[k % views.size()]);
+  config.seed = 7000 + k;
+  config.occluders = k % 3 == 0 ? 1 : 0;
+  return generateFrame(field(name), randomPose(field(name), 0.3, rng), config);
+}
+
 /// The worst frame: 500 random-pose frames per field preset, the four camera presets in turn
 /// (every third frame with an occluding robot; parallel-only, one-direction and empty views
 /// included). Each frame's CPU time is the median of 3 runs; the table gives median, p99 and
@@ -326,12 +337,7 @@ void printWorstFrames() {
     std::vector<double> ms, grid_ms;
     int two = 0, parallel = 0, ok = 0;
     for (int k = 0; k < kWorstFrames; ++k) {
-      SyntheticConfig config;
-      config.view = viewModel(views[k % views.size()]);
-      config.seed = 7000 + k;
-      config.occluders = k % 3 == 0 ? 1 : 0;
-      const SyntheticFrame f =
-          generateFrame(field(name), randomPose(field(name), 0.3, rng), config);
+      const SyntheticFrame f = worstFrame(name, k, rng);
       std::vector<double> runs;
       std::vector<PoseHypothesis> hs;
       for (int r = 0; r < kRuns; ++r) {
@@ -367,6 +373,39 @@ void printWorstFrames() {
   }
 }
 
+/// `--profile=FIELD/POINTS`: locate() once on each summary frame of that row; `--profile=
+/// worst/FIELD`: once on each worst-frame frame of that field, printing the slowest ten. No grid
+/// search and no Google benchmark, so that an instruction count (callgrind with --toggle-collect
+/// on locate) covers exactly these calls.
+int profile(const std::string& what) {
+  const std::size_t slash = what.find('/');
+  if (slash == std::string::npos) return 1;
+  const std::string a = what.substr(0, slash), b = what.substr(slash + 1);
+  if (a != "worst") {
+    for (const Frame& f : frames(a, std::stoi(b))) {
+      benchmark::DoNotOptimize(localizer(a).locate(f.ground).size());
+    }
+    return 0;
+  }
+  constexpr int kWorstFrames = 500;
+  std::mt19937_64 rng(3000);
+  const GlobalHoughLocalizer& ghl = localizer(b);  // the map part is built here, not timed
+  std::vector<std::pair<double, int>> ms;
+  std::vector<char> kind(kWorstFrames);
+  for (int k = 0; k < kWorstFrames; ++k) {
+    const SyntheticFrame f = worstFrame(b, k, rng);
+    kind[k] = hasOnlyParallelLines(f) ? 'p' : hasTwoDirections(f) ? '2' : '-';
+    const double t0 = cpuSeconds();
+    benchmark::DoNotOptimize(ghl.locate(f.ground).size());
+    ms.emplace_back(1e3 * (cpuSeconds() - t0), k);
+  }
+  std::sort(ms.rbegin(), ms.rend());
+  for (int i = 0; i < 10; ++i) {
+    std::printf("frame %3d (%c): %.3f ms\n", ms[i].second, kind[ms[i].second], ms[i].first);
+  }
+  return 0;
+}
+
 }  // namespace
 }  // namespace houghloc
 
@@ -379,6 +418,10 @@ int main(int argc, char** argv) {
     for (int j = i; j + 1 < argc; ++j) argv[j] = argv[j + 1];
     --argc;
     break;
+  }
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.rfind("--profile=", 0) == 0) return houghloc::profile(arg.substr(10));
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
