@@ -10,6 +10,11 @@
 namespace houghloc {
 namespace {
 
+// The scan along lines visits every kCoarseStride-th position first; only next to the best of
+// those and just outside their span where the points fit does it look at the positions between
+// (the scores vary over the kernel's width along a line, 0.15 m, more slowly than the 0.1 m step).
+constexpr std::size_t kCoarseStride = 2;
+
 /// Interval of s for which t0 + s u stays inside |x| <= hx, |y| <= hy.
 bool carpetInterval(const Eigen::Vector2d& t0, const Eigen::Vector2d& u, double hx, double hy,
                     double* s_min, double* s_max) {
@@ -85,12 +90,61 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
   // Scan along the lines: where the points fit the segments and no line is missing.
   const WeightedPoints few = subsamplePoints(points, config_.prescore_points);
   const double step = config_.line_scan_step_m;
-  std::vector<double> s_values;
-  for (double s = s_min; s <= s_max + 1e-9; s += step) s_values.push_back(s);
-  const std::vector<double> scores =
-      scoreAlongLine(few, theta, t0, u, s_values, map_.grid(), config_.scoring);
-  if (scores.empty()) return {};
-  const AlongLineFit fit = fitAlongLine(candidate, s_values, scores, evidence);
+  std::vector<double> fine;
+  for (double s = s_min; s <= s_max + 1e-9; s += step) fine.push_back(s);
+  if (fine.empty()) return {};
+  // Coarse to fine: the fit of every kCoarseStride-th position (and the last), then the fit of
+  // those together with the positions between them next to the coarse best and just outside the
+  // coarse span. A position's score does not depend on which others are scanned.
+  const std::size_t n = fine.size();
+  std::vector<char> visit(n, 0);
+  for (std::size_t j = 0; j < n; j += kCoarseStride) visit[j] = 1;
+  visit[n - 1] = 1;
+  std::vector<std::size_t> coarse_index;
+  std::vector<double> coarse_s;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!visit[j]) continue;
+    coarse_index.push_back(j);
+    coarse_s.push_back(fine[j]);
+  }
+  const std::vector<double> coarse_scores =
+      scoreAlongLine(few, theta, t0, u, coarse_s, map_.grid(), config_.scoring);
+  std::vector<double> coarse_upper = coarse_scores;
+  std::vector<char> coarse_exact(coarse_s.size(), 0);
+  const AlongLineFit coarse =
+      fitAlongLine(candidate, coarse_s, coarse_scores, evidence, &coarse_upper, &coarse_exact);
+  if (!coarse.found) return {};
+  auto visitBetween = [&](std::size_t from, std::size_t to) {  // fine indices, exclusive
+    for (std::size_t j = from + 1; j < to; ++j) visit[j] = 2;
+  };
+  const std::size_t b = coarse.best_index, f = coarse.first, l = coarse.last;
+  if (b > 0) visitBetween(coarse_index[b - 1], coarse_index[b]);
+  if (b + 1 < coarse_index.size()) visitBetween(coarse_index[b], coarse_index[b + 1]);
+  if (f > 0) visitBetween(coarse_index[f - 1], coarse_index[f]);
+  if (l + 1 < coarse_index.size()) visitBetween(coarse_index[l], coarse_index[l + 1]);
+  std::vector<double> extra_s;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (visit[j] == 2) extra_s.push_back(fine[j]);
+  }
+  const std::vector<double> extra_scores =
+      scoreAlongLine(few, theta, t0, u, extra_s, map_.grid(), config_.scoring);
+  // What the coarse fit learnt of its positions' scores holds in the second fit too.
+  std::vector<double> s_values, scores, upper;
+  std::vector<char> exact;
+  for (std::size_t j = 0, c = 0, e = 0; j < n; ++j) {
+    if (visit[j] == 0) continue;
+    s_values.push_back(fine[j]);
+    if (visit[j] == 1) {
+      scores.push_back(coarse_scores[c]);
+      upper.push_back(coarse_upper[c]);
+      exact.push_back(coarse_exact[c++]);
+    } else {
+      scores.push_back(extra_scores[e]);
+      upper.push_back(extra_scores[e++]);
+      exact.push_back(0);
+    }
+  }
+  const AlongLineFit fit = fitAlongLine(candidate, s_values, scores, evidence, &upper, &exact);
   if (!fit.found) return {};
   const double begin = s_values[fit.first], end = s_values[fit.last];
   // One Gaussian per line (the paper's M = 1 case): centred on the span of all stretches where
@@ -118,7 +172,8 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
 
 GlobalHoughLocalizer::AlongLineFit GlobalHoughLocalizer::fitAlongLine(
     const PoseHypothesis& candidate, const std::vector<double>& s_values,
-    const std::vector<double>& positive, const VisibilityEvidence& evidence) const {
+    const std::vector<double>& positive, const VisibilityEvidence& evidence,
+    std::vector<double>* upper_bounds, std::vector<char>* exact_scores) const {
   // A position's score is its positive score less the negative evidence. Only three numbers of
   // all positions matter: the best score, and the first and the last position within the
   // tolerance of it (the span where the points fit). The penalty is >= 0, so a positive score
@@ -129,8 +184,8 @@ GlobalHoughLocalizer::AlongLineFit GlobalHoughLocalizer::fitAlongLine(
   const Eigen::Vector2d t0 = candidate.field_T_robot.translation();
   const double theta = candidate.field_T_robot.theta;
   const std::size_t n = positive.size();
-  std::vector<double> upper = positive;  // an upper bound of each score, or the score itself
-  std::vector<char> exact(n, 0);
+  std::vector<double>& upper = *upper_bounds;  // an upper bound of each score, or the score
+  std::vector<char>& exact = *exact_scores;    // ... itself where exact
   // Raises upper[i] no more: the score when it can reach `level`, else a bound below `level`.
   auto scoreIfAbove = [&](std::size_t i, double level) {
     if (exact[i] || upper[i] < level) return;
@@ -161,7 +216,10 @@ GlobalHoughLocalizer::AlongLineFit GlobalHoughLocalizer::fitAlongLine(
   for (std::size_t i : order) {
     if (fit.best > -1e300 && positive[i] < fit.best) break;
     scoreIfAbove(i, fit.best);
-    if (exact[i]) fit.best = std::max(fit.best, upper[i]);
+    if (exact[i] && upper[i] > fit.best) {
+      fit.best = upper[i];
+      fit.best_index = i;
+    }
   }
   // The first and the last position that reach the floor, each searched from its end.
   const double floor = fit.best - config_.line_scan_tolerance * std::max(std::abs(fit.best), 1.0);

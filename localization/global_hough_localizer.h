@@ -105,13 +105,17 @@ class GlobalHoughLocalizer {
   struct AlongLineFit {
     bool found = false;
     double best = -1e300;
+    std::size_t best_index = 0;  ///< the first position with the best score
     std::size_t first = 0, last = 0;
   };
   /// The fit of the scan at s_values along candidate's line_direction from its translation, with
   /// `positive` the positive score at each position; the negative evidence only where needed.
+  /// `upper` holds an upper bound of each position's score (at first `positive`), or the score
+  /// where `exact`; the fit tightens them, and a later fit over some of the same positions can
+  /// start from them.
   AlongLineFit fitAlongLine(const PoseHypothesis& candidate, const std::vector<double>& s_values,
-                            const std::vector<double>& positive,
-                            const VisibilityEvidence& evidence) const;
+                            const std::vector<double>& positive, const VisibilityEvidence& evidence,
+                            std::vector<double>* upper, std::vector<char>* exact) const;
   /// True when only parallel lines are in view: a 1-D hypothesis explains the points at least
   /// parallel_only_share as well as the best full pose, and that pose has few points across the
   /// lines.
