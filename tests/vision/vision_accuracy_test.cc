@@ -202,7 +202,13 @@ TEST(VisionAccuracy, GreyCarpetGivesNoWrongPoints) {
   const FolderRun run = runFolder("spl_nao-top_grey_carpet");
   print("spl_nao-top_grey_carpet", run);
   EXPECT_EQ(run.frames, 40u);
-  if (run.metrics.points > 0) EXPECT_GE(run.metrics.precision, 0.97);
+  // Points off every line (a grey carpet taken for white) count against it, none or many.
+  const double wrong_points =
+      run.metrics.points == 0 ? 0.0 : run.metrics.points * (1.0 - run.metrics.precision);
+  EXPECT_LE(wrong_points, 10.0);
+  if (run.metrics.points > 0) {
+    EXPECT_GE(run.metrics.precision, 0.97);
+  }
 }
 
 /// The corrector is on by default: on exact extrinsics it must change nothing (the accuracy
