@@ -88,64 +88,12 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
     return {};
   }
   // Scan along the lines: where the points fit the segments and no line is missing.
-  const WeightedPoints few = subsamplePoints(points, config_.prescore_points);
   const double step = config_.line_scan_step_m;
-  std::vector<double> fine;
-  for (double s = s_min; s <= s_max + 1e-9; s += step) fine.push_back(s);
-  if (fine.empty()) return {};
-  // Coarse to fine: the fit of every kCoarseStride-th position (and the last), then the fit of
-  // those together with the positions between them next to the coarse best and just outside the
-  // coarse span. A position's score does not depend on which others are scanned.
-  const std::size_t n = fine.size();
-  std::vector<char> visit(n, 0);
-  for (std::size_t j = 0; j < n; j += kCoarseStride) visit[j] = 1;
-  visit[n - 1] = 1;
-  std::vector<std::size_t> coarse_index;
-  std::vector<double> coarse_s;
-  for (std::size_t j = 0; j < n; ++j) {
-    if (!visit[j]) continue;
-    coarse_index.push_back(j);
-    coarse_s.push_back(fine[j]);
-  }
-  const std::vector<double> coarse_scores =
-      scoreAlongLine(few, theta, t0, u, coarse_s, map_.grid(), config_.scoring);
-  std::vector<double> coarse_upper = coarse_scores;
-  std::vector<char> coarse_exact(coarse_s.size(), 0);
-  const AlongLineFit coarse =
-      fitAlongLine(candidate, coarse_s, coarse_scores, evidence, &coarse_upper, &coarse_exact);
-  if (!coarse.found) return {};
-  auto visitBetween = [&](std::size_t from, std::size_t to) {  // fine indices, exclusive
-    for (std::size_t j = from + 1; j < to; ++j) visit[j] = 2;
-  };
-  const std::size_t b = coarse.best_index, f = coarse.first, l = coarse.last;
-  if (b > 0) visitBetween(coarse_index[b - 1], coarse_index[b]);
-  if (b + 1 < coarse_index.size()) visitBetween(coarse_index[b], coarse_index[b + 1]);
-  if (f > 0) visitBetween(coarse_index[f - 1], coarse_index[f]);
-  if (l + 1 < coarse_index.size()) visitBetween(coarse_index[l], coarse_index[l + 1]);
-  std::vector<double> extra_s;
-  for (std::size_t j = 0; j < n; ++j) {
-    if (visit[j] == 2) extra_s.push_back(fine[j]);
-  }
-  const std::vector<double> extra_scores =
-      scoreAlongLine(few, theta, t0, u, extra_s, map_.grid(), config_.scoring);
-  // What the coarse fit learnt of its positions' scores holds in the second fit too.
-  std::vector<double> s_values, scores, upper;
-  std::vector<char> exact;
-  for (std::size_t j = 0, c = 0, e = 0; j < n; ++j) {
-    if (visit[j] == 0) continue;
-    s_values.push_back(fine[j]);
-    if (visit[j] == 1) {
-      scores.push_back(coarse_scores[c]);
-      upper.push_back(coarse_upper[c]);
-      exact.push_back(coarse_exact[c++]);
-    } else {
-      scores.push_back(extra_scores[e]);
-      upper.push_back(extra_scores[e++]);
-      exact.push_back(0);
-    }
-  }
-  const AlongLineFit fit = fitAlongLine(candidate, s_values, scores, evidence, &upper, &exact);
-  if (!fit.found) return {};
+  const AlongLineScan scan = scanAlongLine(
+      candidate, subsamplePoints(points, config_.prescore_points), evidence, s_min, s_max);
+  if (!scan.fit.found) return {};
+  const AlongLineFit& fit = scan.fit;
+  const std::vector<double>& s_values = scan.s_values;
   const double begin = s_values[fit.first], end = s_values[fit.last];
   // One Gaussian per line (the paper's M = 1 case): centred on the span of all stretches where
   // the points fit, with a standard deviation along the lines covering that whole span.
@@ -168,6 +116,71 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
   // The score is that of the best position (the mean may sit between stretches).
   h.score = std::max(h.score, fit.best);
   return {h};
+}
+
+GlobalHoughLocalizer::AlongLineScan GlobalHoughLocalizer::scanAlongLine(
+    const PoseHypothesis& candidate, const WeightedPoints& few, const VisibilityEvidence& evidence,
+    double s_min, double s_max) const {
+  const Eigen::Vector2d u = candidate.line_direction;
+  const Eigen::Vector2d t0 = candidate.field_T_robot.translation();
+  const double theta = candidate.field_T_robot.theta;
+  std::vector<double> fine;
+  for (double s = s_min; s <= s_max + 1e-9; s += config_.line_scan_step_m) fine.push_back(s);
+  AlongLineScan scan;
+  if (fine.empty()) return scan;
+  // Coarse to fine: the fit of every kCoarseStride-th position (and the last), then the fit of
+  // those together with the positions between them next to the coarse best and just outside the
+  // coarse span. A position's score does not depend on which others are scanned.
+  const std::size_t n = fine.size();
+  std::vector<char> visit(n, 0);
+  for (std::size_t j = 0; j < n; j += kCoarseStride) visit[j] = 1;
+  visit[n - 1] = 1;
+  std::vector<std::size_t> coarse_index;
+  std::vector<double> coarse_s;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!visit[j]) continue;
+    coarse_index.push_back(j);
+    coarse_s.push_back(fine[j]);
+  }
+  const std::vector<double> coarse_scores =
+      scoreAlongLine(few, theta, t0, u, coarse_s, map_.grid(), config_.scoring);
+  std::vector<double> coarse_upper = coarse_scores;
+  std::vector<char> coarse_exact(coarse_s.size(), 0);
+  const AlongLineFit coarse =
+      fitAlongLine(candidate, coarse_s, coarse_scores, evidence, &coarse_upper, &coarse_exact);
+  if (!coarse.found) return scan;
+  auto visitBetween = [&](std::size_t from, std::size_t to) {  // fine indices, exclusive
+    for (std::size_t j = from + 1; j < to; ++j) visit[j] = 2;
+  };
+  const std::size_t b = coarse.best_index, f = coarse.first, l = coarse.last;
+  if (b > 0) visitBetween(coarse_index[b - 1], coarse_index[b]);
+  if (b + 1 < coarse_index.size()) visitBetween(coarse_index[b], coarse_index[b + 1]);
+  if (f > 0) visitBetween(coarse_index[f - 1], coarse_index[f]);
+  if (l + 1 < coarse_index.size()) visitBetween(coarse_index[l], coarse_index[l + 1]);
+  std::vector<double> extra_s;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (visit[j] == 2) extra_s.push_back(fine[j]);
+  }
+  const std::vector<double> extra_scores =
+      scoreAlongLine(few, theta, t0, u, extra_s, map_.grid(), config_.scoring);
+  // What the coarse fit learnt of its positions' scores holds in the second fit too.
+  std::vector<double> scores, upper;
+  std::vector<char> exact;
+  for (std::size_t j = 0, c = 0, e = 0; j < n; ++j) {
+    if (visit[j] == 0) continue;
+    scan.s_values.push_back(fine[j]);
+    if (visit[j] == 1) {
+      scores.push_back(coarse_scores[c]);
+      upper.push_back(coarse_upper[c]);
+      exact.push_back(coarse_exact[c++]);
+    } else {
+      scores.push_back(extra_scores[e]);
+      upper.push_back(extra_scores[e++]);
+      exact.push_back(0);
+    }
+  }
+  scan.fit = fitAlongLine(candidate, scan.s_values, scores, evidence, &upper, &exact);
+  return scan;
 }
 
 GlobalHoughLocalizer::AlongLineFit GlobalHoughLocalizer::fitAlongLine(

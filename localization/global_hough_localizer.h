@@ -108,6 +108,17 @@ class GlobalHoughLocalizer {
     std::size_t best_index = 0;  ///< the first position with the best score
     std::size_t first = 0, last = 0;
   };
+  /// The positions scanned along candidate's line_direction (s, m from its translation) and
+  /// their fit.
+  struct AlongLineScan {
+    std::vector<double> s_values;
+    AlongLineFit fit;
+  };
+  /// The scan over [s_min, s_max] in line_scan_step_m steps, coarse to fine: every other
+  /// position, then the ones between next to the best and at the ends of the span where the
+  /// points fit. `few`: the points subsampled for scoring.
+  AlongLineScan scanAlongLine(const PoseHypothesis& candidate, const WeightedPoints& few,
+                              const VisibilityEvidence& evidence, double s_min, double s_max) const;
   /// The fit of the scan at s_values along candidate's line_direction from its translation, with
   /// `positive` the positive score at each position; the negative evidence only where needed.
   /// `upper` holds an upper bound of each position's score (at first `positive`), or the score
