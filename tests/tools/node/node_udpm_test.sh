@@ -34,7 +34,10 @@ unshare -n bash -euo pipefail -c '
 ' bash "$log" "$play" "$node" "$folder" "$work/node_udpm.stderr"
 # node_log_check asserts <= 1 % lost in transport; the images the node dropped by design when it
 # fell behind (newest wins) may be up to MAX_DROPPED_PERCENT (10, more under the sanitizers).
-summary=$("$check" "$log" "${HOUGHLOC_MAX_DROPPED_PERCENT:-10}")
+summary=$("$check" "$log" "${HOUGHLOC_MAX_DROPPED_PERCENT:-10}") || {
+  echo "$summary"
+  exit 1
+}
 echo "$summary"
 if [[ -n "$javac" ]]; then
   "$javac" -cp "$cp" -d "$work" "$java_src"

@@ -5,8 +5,15 @@
 // hypotheses stays within the tracker's bound, the estimate stays finite, and the thread CPU
 // time of the last 1 000 frames is within 1.25x of the first 1 000 (no state that grows and
 // slows every step down). Release only (label slow).
+//
+// The end of the run is judged by the cheapest of its last five 1 000-frame windows: state that
+// grows slows all five, while a busy neighbour on a shared machine slows a few seconds of them
+// (thread CPU time still pays for its cache misses and clock). A CI run once measured 1.258 on
+// the last window alone where a quiet machine measures 0.99; one run here measured 1.17 s per
+// window for the first 5 000 frames and 0.88-0.92 s after.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -22,6 +29,7 @@ namespace {
 
 constexpr int kFrames = 20000;
 constexpr int kWindow = 1000;
+constexpr int kEndWindows = 5;  ///< the end of the run: its last kEndWindows windows
 
 /// A recording's images held in memory as YUYV (as a NAO delivers them, and half the bytes of
 /// BGR), so the loop measures the pipeline, not image decoding.
@@ -56,7 +64,8 @@ TEST(PipelineSoak, TwentyThousandFramesKeepMemoryHypothesesAndTimeBounded) {
   const int max_hypotheses = config.localizer.tracker.set.max_hypotheses;
 
   LoopedRun run(std::move(loops));
-  double cpu_first = 0.0, cpu_last = 0.0, rss_after_first = 0.0;
+  std::vector<double> window_cpu(kFrames / kWindow, 0.0);  ///< thread CPU seconds per window
+  double rss_after_first = 0.0;
   std::size_t most_hypotheses = 0;
   int frames_with_points = 0;
   for (int n = 0; n < kFrames; ++n) {
@@ -64,8 +73,7 @@ TEST(PipelineSoak, TwentyThousandFramesKeepMemoryHypothesesAndTimeBounded) {
     const double cpu_before = threadCpuSeconds();
     const PipelineResult result = pipeline.process(step.frame, images[step.loop][step.index]);
     const double cpu = threadCpuSeconds() - cpu_before;
-    if (n < kWindow) cpu_first += cpu;
-    if (n >= kFrames - kWindow) cpu_last += cpu;
+    window_cpu[n / kWindow] += cpu;
     if (n == kWindow - 1) rss_after_first = residentMegabytes();
     most_hypotheses = std::max(most_hypotheses, result.estimate.hypotheses.size());
     for (const EstimateHypothesis& h : result.estimate.hypotheses) {
@@ -80,11 +88,16 @@ TEST(PipelineSoak, TwentyThousandFramesKeepMemoryHypothesesAndTimeBounded) {
     }
   }
   const double rss_growth = residentMegabytes() - rss_after_first;
+  const double cpu_first = window_cpu.front();
+  const double cpu_last = *std::min_element(window_cpu.end() - kEndWindows, window_cpu.end());
+  std::printf("soak: thread CPU per %d frames (s):", kWindow);
+  for (const double seconds : window_cpu) std::printf(" %.2f", seconds);
   std::printf(
-      "soak: resident growth after frame %d: %.2f MB; CPU first %d frames %.2f s, last "
-      "%.2f s (ratio %.3f); most hypotheses %zu of %d; frames with points %d\n",
-      kWindow, rss_growth, kWindow, cpu_first, cpu_last, cpu_last / cpu_first, most_hypotheses,
-      max_hypotheses, frames_with_points);
+      "\nsoak: resident growth after frame %d: %.2f MB; CPU first %d frames %.2f s, cheapest "
+      "of the last %d windows %.2f s (ratio %.3f; last window alone %.3f); most hypotheses %zu "
+      "of %d; frames with points %d\n",
+      kWindow, rss_growth, kWindow, cpu_first, kEndWindows, cpu_last, cpu_last / cpu_first,
+      window_cpu.back() / cpu_first, most_hypotheses, max_hypotheses, frames_with_points);
   EXPECT_LT(rss_growth, 5.0);
   EXPECT_LE(most_hypotheses, static_cast<std::size_t>(max_hypotheses));
   EXPECT_LE(cpu_last, 1.25 * cpu_first);
