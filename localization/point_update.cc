@@ -16,11 +16,16 @@ double robustWeight(double u2, PointUpdateConfig::Kernel kernel) {
   return 1.0 / (1.0 + u2);
 }
 
-/// The state the iterations solve for: the field pose and the frame's camera (roll, pitch)
-/// error, a nuisance that is fitted with the pose and then dropped.
-constexpr int kState = 5;
-using StateVector = Eigen::Matrix<double, kState, 1>;
-using StateMatrix = Eigen::Matrix<double, kState, kState>;
+/// The state the iterations solve for: the field pose (N = 3), or the field pose and the
+/// frame's camera (roll, pitch) error (N = 5), a nuisance that is fitted with the pose and then
+/// dropped. The recorded-pose fit, run on every hypothesis of every frame, solves 3 states: the
+/// tracker's hot path does not pay for a tilt it does not fit.
+constexpr int kPose = 3;
+constexpr int kPoseAndTilt = 5;
+template <int N>
+using StateVector = Eigen::Matrix<double, N, 1>;
+template <int N>
+using StateMatrix = Eigen::Matrix<double, N, N>;
 
 /// Inverse of a covariance or information matrix, regularised so a singular or huge one still
 /// gives a usable (tiny) inverse instead of NaN.
@@ -44,17 +49,21 @@ int validPoints(const std::vector<GroundPoint>& points) {
 }
 
 /// Pose covariance and the tilt prior as one block-diagonal covariance of the state.
-StateMatrix stateCovariance(const Eigen::Matrix3d& pose_covariance,
-                            const Eigen::Vector2d& tilt_sigma) {
-  StateMatrix c = StateMatrix::Zero();
-  c.topLeftCorner<3, 3>() = pose_covariance;
-  c.bottomRightCorner<2, 2>().diagonal() = tilt_sigma.cwiseProduct(tilt_sigma);
+template <int N>
+StateMatrix<N> stateCovariance(const Eigen::Matrix3d& pose_covariance,
+                               const Eigen::Vector2d& tilt_sigma) {
+  StateMatrix<N> c = StateMatrix<N>::Zero();
+  c.template topLeftCorner<3, 3>() = pose_covariance;
+  if constexpr (N == kPoseAndTilt) {
+    c.template bottomRightCorner<2, 2>().diagonal() = tilt_sigma.cwiseProduct(tilt_sigma);
+  }
   return c;
 }
 
+template <int N>
 struct Accumulated {
-  StateMatrix jtj = StateMatrix::Zero();
-  StateVector jtr = StateVector::Zero();
+  StateMatrix<N> jtj = StateMatrix<N>::Zero();
+  StateVector<N> jtr = StateVector<N>::Zero();
   int used = 0;
   double weight_sum = 0.0;
   int processed = 0;  ///< valid points visited
@@ -64,10 +73,11 @@ struct Accumulated {
 
 /// One pass over the points at `pose` with the camera tilted by `tilt`: gated, robustly weighted
 /// normal equations, and the likelihood statistics (ungated) used for hypothesis weights.
-Accumulated accumulate(const Pose2& pose, const Eigen::Vector2d& tilt, const StateMatrix& gate_cov,
-                       const std::vector<GroundPoint>& points, const FeatureIndex& index,
-                       const PointUpdateConfig& cfg, size_t stride) {
-  Accumulated acc;
+template <int N>
+Accumulated<N> accumulate(const Pose2& pose, const Eigen::Vector2d& tilt,
+                          const StateMatrix<N>& gate_cov, const std::vector<GroundPoint>& points,
+                          const FeatureIndex& index, const PointUpdateConfig& cfg, size_t stride) {
+  Accumulated<N> acc;
   const double var = cfg.point_sigma_m * cfg.point_sigma_m;
   const double inv_lik_var = 1.0 / (cfg.likelihood_sigma_m * cfg.likelihood_sigma_m);
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
@@ -78,7 +88,8 @@ Accumulated accumulate(const Pose2& pose, const Eigen::Vector2d& tilt, const Sta
     const GroundPoint& gp = points[i];
     if (!gp.p_robot.allFinite() || !(gp.weight > 0.0) || !std::isfinite(gp.weight)) continue;
     ++acc.processed;
-    const Eigen::Vector2d q = gp.p_robot + gp.tilt_jacobian * tilt;
+    Eigen::Vector2d q = gp.p_robot;
+    if constexpr (N == kPoseAndTilt) q += gp.tilt_jacobian * tilt;
     const Eigen::Vector2d arm = rotation * q;
     const Eigen::Vector2d p = arm + Eigen::Vector2d(pose.x, pose.y);
     Association a;
@@ -91,33 +102,36 @@ Accumulated accumulate(const Pose2& pose, const Eigen::Vector2d& tilt, const Sta
     if (a.distance_m <= cfg.inlier_m) ++acc.inliers;
     if (a.distance_m > cfg.max_association_m) continue;
     // d p / d theta = Rz'(theta) q = perp(arm); d p / d tilt = Rz(theta) tilt_jacobian.
-    StateVector j;
-    j.head<2>() = a.normal;
+    StateVector<N> j;
+    j.template head<2>() = a.normal;
     j(2) = -a.normal.x() * arm.y() + a.normal.y() * arm.x();
-    j.tail<2>() = (rotation * gp.tilt_jacobian).transpose() * a.normal;
+    if constexpr (N == kPoseAndTilt) {
+      j.template tail<2>() = (rotation * gp.tilt_jacobian).transpose() * a.normal;
+    }
     const double innovation_var = j.dot(gate_cov * j) + var;
     const double r2 = a.residual_m * a.residual_m;
     if (r2 > cfg.gate_chi2 * innovation_var) continue;
     const double w = gp.weight * robustWeight(r2 * inv_k2 / innovation_var, cfg.kernel);
-    acc.jtj.selfadjointView<Eigen::Lower>().rankUpdate(j, w);
+    acc.jtj.template selfadjointView<Eigen::Lower>().rankUpdate(j, w);
     acc.jtr += (w * a.residual_m) * j;
     acc.weight_sum += w;
     ++acc.used;
   }
-  acc.jtj = acc.jtj.selfadjointView<Eigen::Lower>();
+  acc.jtj = acc.jtj.template selfadjointView<Eigen::Lower>();
   return acc;
 }
 
-/// Iterated EKF of the pose, with the camera's (roll, pitch) error as a nuisance of prior std
-/// tilt_sigma (0: that angle is taken as exact).
+/// Iterated EKF of the pose; with N = 5, the camera's (roll, pitch) error is a nuisance of prior
+/// std tilt_sigma (0: that angle is taken as exact). With N = 3, tilt_sigma is not read.
+template <int N>
 PointUpdateResult fitPose(const GaussianPose& prior, const std::vector<GroundPoint>& points,
                           const FeatureIndex& index, const PointUpdateConfig& cfg,
                           const Eigen::Vector2d& tilt_sigma) {
   PointUpdateResult result;
   result.posterior = prior;
   result.num_points = validPoints(points);
-  const StateMatrix prior_info =
-      inverseOf<kState>(stateCovariance(prior.covariance, tilt_sigma.cwiseMax(1e-9)));
+  const StateMatrix<N> prior_info =
+      inverseOf<N>(stateCovariance<N>(prior.covariance, tilt_sigma.cwiseMax(1e-9)));
   // Angles taken as exact stay at zero (their tiny prior std leaves steps of ~1e-9 otherwise).
   const Eigen::Vector2d tilt_free = (tilt_sigma.array() > 0.0).cast<double>();
   const double inv_var = 1.0 / (cfg.point_sigma_m * cfg.point_sigma_m);
@@ -125,33 +139,34 @@ PointUpdateResult fitPose(const GaussianPose& prior, const std::vector<GroundPoi
   // within about half a line spacing); the prior term below still pulls toward the mean.
   Pose2 x = searchUpdateStart(prior, points, index, cfg);
   Eigen::Vector2d tilt = Eigen::Vector2d::Zero();
-  StateMatrix gate_cov = stateCovariance(prior.covariance, tilt_sigma);
-  StateMatrix info = prior_info;
+  StateMatrix<N> gate_cov = stateCovariance<N>(prior.covariance, tilt_sigma);
+  StateMatrix<N> info = prior_info;
   // Iterations run on an evenly strided subset (information is capped at max_effective_points
   // anyway); the last pass uses every point for the final step and the statistics.
   const size_t stride = static_cast<size_t>(
       std::ceil(points.size() / std::max(1.0, static_cast<double>(cfg.max_iteration_points))));
   const int max_iterations = std::max(1, cfg.max_iterations);
-  Accumulated acc;
+  Accumulated<N> acc;
   bool converged = false;
   for (int it = 0; it < max_iterations; ++it) {
     const bool final_pass = stride <= 1 || converged || it == max_iterations - 1;
-    acc = accumulate(x, tilt, gate_cov, points, index, cfg, final_pass ? 1 : stride);
+    acc = accumulate<N>(x, tilt, gate_cov, points, index, cfg, final_pass ? 1 : stride);
     result.iterations = it + 1;
     if (acc.used < cfg.min_points) break;
     const double scale = std::min(1.0, cfg.max_effective_points / std::max(acc.weight_sum, 1e-9));
     info = prior_info + (scale * inv_var) * acc.jtj;
-    StateVector from_prior;
-    from_prior << poseDifference(prior.mean, x), -tilt;
-    const StateVector rhs = prior_info * from_prior - (scale * inv_var) * acc.jtr;
-    const StateVector step = info.ldlt().solve(rhs);
+    StateVector<N> from_prior;
+    from_prior.template head<3>() = poseDifference(prior.mean, x);
+    if constexpr (N == kPoseAndTilt) from_prior.template tail<2>() = -tilt;
+    const StateVector<N> rhs = prior_info * from_prior - (scale * inv_var) * acc.jtr;
+    const StateVector<N> step = info.ldlt().solve(rhs);
     if (!step.allFinite()) break;
-    x = poseAdd(x, step.head<3>());
-    tilt += step.tail<2>().cwiseProduct(tilt_free);
+    x = poseAdd(x, step.template head<3>());
+    if constexpr (N == kPoseAndTilt) tilt += step.template tail<2>().cwiseProduct(tilt_free);
     result.corrected = true;
     // Later iterations gate with the shrinking posterior, which rejects more outliers.
-    gate_cov = inverseOf<kState>(info);
-    converged = step.head<2>().norm() < cfg.converged_m && std::abs(step(2)) < cfg.converged_rad;
+    gate_cov = inverseOf<N>(info);
+    converged = step.template head<2>().norm() < cfg.converged_m && std::abs(step(2)) < cfg.converged_rad;
     // A hypothesis that explains few points is judged by its likelihood, not polished.
     converged = converged || acc.used < cfg.poor_association_share * acc.processed;
     if (converged && (stride <= 1 || final_pass)) break;
@@ -159,7 +174,7 @@ PointUpdateResult fitPose(const GaussianPose& prior, const std::vector<GroundPoi
   }
   if (result.corrected) {
     // The pose's marginal: the tilt is the frame's own and is not carried over.
-    const Eigen::Matrix3d cov = inverseOf<kState>(info).topLeftCorner<3, 3>();
+    const Eigen::Matrix3d cov = inverseOf<N>(info).template topLeftCorner<3, 3>();
     if (x.isFinite() && cov.allFinite() && tilt.allFinite()) {
       result.posterior.mean = x;
       result.posterior.covariance = cov;
@@ -193,9 +208,9 @@ PointUpdateResult updateWithGroundPoints(const GaussianPose& prior,
   // The recorded camera pose first. Only a frame it explains poorly is fitted again with the
   // tilt free, and the tilted fit is taken only when it explains the points clearly better:
   // the tilt adds freedom that noise would use too.
-  PointUpdateResult rigid = fitPose(prior, points, index, cfg, Eigen::Vector2d::Zero());
+  PointUpdateResult rigid = fitPose<kPose>(prior, points, index, cfg, Eigen::Vector2d::Zero());
   if (tilt_sigma.isZero() || !(rigid.mean_log_likelihood < -cfg.tilt_min_gain)) return rigid;
-  PointUpdateResult tilted = fitPose(prior, points, index, cfg, tilt_sigma);
+  PointUpdateResult tilted = fitPose<kPoseAndTilt>(prior, points, index, cfg, tilt_sigma);
   return tilted.mean_log_likelihood >= rigid.mean_log_likelihood + cfg.tilt_min_gain ? tilted
                                                                                      : rigid;
 }
