@@ -5,9 +5,23 @@ namespace houghloc {
 std::pair<std::string, ConfigField> configMember(const std::string& name, bool* value) {
   return {name,
           {[value](const cv::FileNode& node) {
-             if (!node.isInt()) throw std::invalid_argument("expected 0 or 1");
+             // OpenCV's YAML reader gives true/false as strings; the written form is 0/1.
+             if (node.isString()) {
+               const std::string text = node.string();
+               if (text == "true" || text == "True" || text == "TRUE") {
+                 *value = true;
+               } else if (text == "false" || text == "False" || text == "FALSE") {
+                 *value = false;
+               } else {
+                 throw std::invalid_argument("expected 0, 1, true or false");
+               }
+               return;
+             }
+             if (!node.isInt()) throw std::invalid_argument("expected 0, 1, true or false");
              const int number = static_cast<int>(node);
-             if (number != 0 && number != 1) throw std::invalid_argument("expected 0 or 1");
+             if (number != 0 && number != 1) {
+               throw std::invalid_argument("expected 0, 1, true or false");
+             }
              *value = number != 0;
            },
            [value](cv::FileStorage& storage, const std::string& key) {

@@ -16,11 +16,12 @@ enum class FrameRejection {
   kNotTurfBounded,     ///< ... without turf on both sides
   kNotWhite,           ///< ... too saturated for paint
   kSoftEdge,           ///< ... with edges ramping like round bars
+  kCompactBlob,        ///< ... whose run does not go on beside them (ball, feet)
   kNotProjected,       ///< spots found, all beyond the range or above the horizon
   kDroppedNearBorder,  ///< spots found, all dropped near the boundary or on the own feet
 };
 
-constexpr int kNumFrameRejections = 11;
+constexpr int kNumFrameRejections = 12;
 
 /// Why this frame has no points (kNone when it has some).
 FrameRejection classifyFrame(const VisionResult& result);

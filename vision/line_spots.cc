@@ -3,26 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vision/line_continuation.h"
 #include "vision/pixel_access.h"
+#include "vision/scanline.h"
 
 namespace houghloc {
 namespace {
-
-/// One scanline: n pixels of a run (BgrRun read in place, DecodedRun from a decoding reader);
-/// (u0, v0) + i * (du, dv) is pixel i's position.
-template <typename Run>
-struct Scanline {
-  Run run;
-  int n;
-  int u0, v0, du, dv;
-  const uchar* at(int i) const { return run.at(i); }
-  int luma(int i) const { return run.luma(i); }
-};
-
-template <typename Run>
-Scanline<Run> scanline(const Run& run, int n, int u0, int v0, int du, int dv) {
-  return {run, n, u0, v0, du, dv};
-}
 
 class SpotScanner {
  public:
@@ -57,19 +43,24 @@ class SpotScanner {
     }
   }
 
- private:
-  /// Half-maximum crossing walking from the peak in direction dir, sub-pixel.
-  template <typename Run>
-  static float crossing(const Scanline<Run>& line, int peak, int dir, float level) {
-    int k = peak;
-    while (k + dir >= 0 && k + dir < line.n && line.luma(k + dir) >= level) k += dir;
-    if (k + dir < 0 || k + dir >= line.n) return static_cast<float>(k);
-    const float inside = static_cast<float>(line.luma(k)),
-                outside = static_cast<float>(line.luma(k + dir));
-    const float t = inside > outside ? (inside - level) / (inside - outside) : 0.5f;
-    return k + dir * t;
+  /// Drops the spots from index `first` on whose run does not go on in the scanlines beside
+  /// them (line_continuation.h). `buffer` must not be the one the scanline was decoded into.
+  template <typename Pixels>
+  void dropCompactBlobs(const Pixels& pixels, std::size_t first, RunBuffer* buffer) const {
+    std::size_t kept = first;
+    for (std::size_t i = first; i < spots_->size(); ++i) {
+      const LineSpot spot = (*spots_)[i];
+      if (continuesBeside(pixels, spot, threshold_ / 2, RunBounds{color_, dark_luma_},
+                          config_.continuation, buffer)) {
+        (*spots_)[kept++] = spot;
+      } else {
+        reject(spot.pixel, SpotRejection::kCompactBlob, &LineSpotStats::compact_blob);
+      }
+    }
+    spots_->resize(kept);
   }
 
+ private:
   /// Ramp length (px) of the edge between the peak and the background along dir: the contrast
   /// over the steepest two-pixel luma step. Paint ends at a sharp edge (blur and anti-aliasing
   /// spread it over a few px); the shading of a round bar (the goal frame lying on the ground)
@@ -123,13 +114,16 @@ class SpotScanner {
   template <typename Run>
   void reject(const Scanline<Run>& line, int peak, SpotRejection reason,
               int LineSpotStats::*counter) const {
+    reject(Eigen::Vector2f(static_cast<float>(line.u0 + line.du * peak),
+                           static_cast<float>(line.v0 + line.dv * peak)),
+           reason, counter);
+  }
+
+  void reject(const Eigen::Vector2f& pixel, SpotRejection reason,
+              int LineSpotStats::*counter) const {
     if (!stats_) return;
     ++(stats_->*counter);
-    if (config_.keep_rejected) {
-      stats_->rejected.push_back({{static_cast<float>(line.u0 + line.du * peak),
-                                   static_cast<float>(line.v0 + line.dv * peak)},
-                                  reason});
-    }
+    if (config_.keep_rejected) stats_->rejected.push_back({pixel, reason});
   }
 
   template <typename Run>
@@ -147,7 +141,8 @@ class SpotScanner {
       return;
     }
     const float level = 0.5f * (peak_luma + 0.5f * (background_before + background_after));
-    const float left = crossing(line, peak, -1, level), right = crossing(line, peak, +1, level);
+    const float left = levelCrossing(line, peak, -1, level),
+                right = levelCrossing(line, peak, +1, level);
     const float centre = 0.5f * (left + right), width = right - left;
     const float u = line.u0 + line.du * centre, v = line.v0 + line.dv * centre;
     const Eigen::Vector2f expected_xy = widths_.expectedPx(u, v);
@@ -190,17 +185,22 @@ class SpotScanner {
 };
 
 /// Scans the grid's columns, then its rows, each stretch below the boundary and above the
-/// robot's body.
+/// robot's body, into `spots_out` (the scanner's spots); each scanline's spots are checked
+/// against the scanlines beside them before the next scanline is read.
 template <typename Pixels>
 void scanGrid(const Pixels& pixels, const FieldBoundary& boundary, const ScanGrid& grid,
-              const SpotScanner& scanner) {
-  RunBuffer buffer;  // one scanline's decoded pixels (formats not read in place)
+              const SpotScanner& scanner, std::vector<LineSpot>* spots_out) {
+  RunBuffer buffer;         // one scanline's decoded pixels (formats not read in place)
+  RunBuffer beside_buffer;  // ... and those of the scanlines beside a spot
+  std::vector<LineSpot>& spots = *spots_out;
   for (const ScanGrid::Column& column : grid.columns) {
     const int end = std::min(column.v_end, static_cast<int>(boundary.bodyRowAt(column.u)));
     const int n = end - column.v_begin;
     if (n < 4) continue;
+    const std::size_t first = spots.size();
     scanner.scan(scanline(pixels.columnRun(column.u, column.v_begin, n, &buffer), n, column.u,
                           column.v_begin, 0, 1));
+    scanner.dropCompactBlobs(pixels, first, &beside_buffer);
   }
   for (int v : grid.rows) {
     // Scan each stretch of the row that lies below the boundary.
@@ -213,8 +213,10 @@ void scanGrid(const Pixels& pixels, const FieldBoundary& boundary, const ScanGri
       const int begin = u;
       while (u < pixels.cols() && field(u)) ++u;
       if (u - begin >= 4) {
+        const std::size_t first = spots.size();
         scanner.scan(
             scanline(pixels.rowRun(begin, v, u - begin, &buffer), u - begin, begin, v, 1, 0));
+        scanner.dropCompactBlobs(pixels, first, &beside_buffer);
       }
     }
   }
@@ -229,7 +231,8 @@ std::vector<LineSpot> detectLineSpots(const cv::Mat& image, const FieldColor& co
   std::vector<LineSpot> spots;
   if (!color.valid || !boundary.found) return spots;
   const SpotScanner scanner(color, widths, config, &spots, stats);
-  visitPixels(image, [&](const auto& pixels) { scanGrid(pixels, boundary, grid, scanner); });
+  visitPixels(image,
+              [&](const auto& pixels) { scanGrid(pixels, boundary, grid, scanner, &spots); });
   return spots;
 }
 

@@ -11,6 +11,17 @@
 
 namespace houghloc {
 
+/// How a line spot's run must go on in the scanlines beside it (line_continuation.h): a field
+/// line does, a compact white blob of about a line's width (the rim of a ball or a robot's foot
+/// seen close by the bottom camera) does not.
+struct LineContinuationConfig {
+  bool enabled = true;
+  double offset_width_share = 0.5;  ///< the scanlines beside lie this share of the spot's width
+  int min_offset_px = 2;            ///< ... but at least this many px away
+  double max_width_ratio = 1.5;     ///< a run beside continues the spot when its width is within
+  double width_tolerance_px = 1.5;  ///< this ratio of the spot's, plus this many px (far lines)
+};
+
 struct LineSpotConfig {
   double min_contrast = 18.0;   ///< luma (0-255) a line must rise above the turf on both sides
   double noise_contrast = 3.5;  ///< ... and at least this many turf noise sigmas: the
@@ -35,6 +46,7 @@ struct LineSpotConfig {
   double max_edge_ramp_ratio = 0.2;      ///< ... and this share of the expected width is no paint
                                          ///< but the shading of a round white bar (the goal frame
                                          ///< lying on the ground)
+  LineContinuationConfig continuation;
   bool keep_rejected = false;  ///< list rejected candidates in LineSpotStats (overlays; slower)
 };
 
@@ -47,7 +59,14 @@ struct LineSpot {
 };
 
 /// Why a candidate was rejected.
-enum class SpotRejection { kTooNarrow, kTooWide, kNotGreenBounded, kNotWhite, kSoftEdge };
+enum class SpotRejection {
+  kTooNarrow,
+  kTooWide,
+  kNotGreenBounded,
+  kNotWhite,
+  kSoftEdge,
+  kCompactBlob,  ///< the run does not go on beside the spot (LineContinuationConfig)
+};
 
 /// A rejected candidate where it lay, for overlays (LineSpotStats::rejected).
 struct RejectedSpot {
@@ -63,6 +82,7 @@ struct LineSpotStats {
   int not_green_bounded = 0;
   int not_white = 0;
   int soft_edge = 0;                   ///< edges ramping too slowly for paint (round bars)
+  int compact_blob = 0;                ///< runs that do not go on beside them (ball, feet)
   std::vector<RejectedSpot> rejected;  ///< only with LineSpotConfig::keep_rejected
 };
 

@@ -67,6 +67,14 @@ TEST(ConfigSections, ReadsNestedMembersAndKeepsDefaults) {
   EXPECT_EQ(missing.count, 3);
 }
 
+TEST(ConfigSections, ReadsTrueAndFalseAsFlags) {
+  EXPECT_FALSE(readYaml("outer:\n  enabled: false\n").enabled);
+  EXPECT_FALSE(readYaml("outer:\n  enabled: False\n").enabled);
+  EXPECT_FALSE(readYaml("outer:\n  enabled: 0\n").enabled);
+  EXPECT_TRUE(readYaml("outer:\n  enabled: true\n").enabled);
+  EXPECT_TRUE(readYaml("outer:\n  enabled: TRUE\n").enabled);
+}
+
 TEST(ConfigSections, RoundTripsEveryMember) {
   Outer o;
   o.count = -4;
@@ -95,7 +103,10 @@ TEST(ConfigSections, ErrorsNameSourceAndKey) {
   EXPECT_EQ(sectionErrorOf("outer:\n  count: 2.5\n"),
             "test.yaml: outer.count: expected an integer");
   EXPECT_EQ(sectionErrorOf("outer:\n  limit: -1\n"), "test.yaml: outer.limit: out of range");
-  EXPECT_EQ(sectionErrorOf("outer:\n  enabled: 2\n"), "test.yaml: outer.enabled: expected 0 or 1");
+  EXPECT_EQ(sectionErrorOf("outer:\n  enabled: 2\n"),
+            "test.yaml: outer.enabled: expected 0, 1, true or false");
+  EXPECT_EQ(sectionErrorOf("outer:\n  enabled: yes please\n"),
+            "test.yaml: outer.enabled: expected 0, 1, true or false");
   EXPECT_EQ(sectionErrorOf("outer:\n  inner:\n    mode: slow\n"),
             "test.yaml: outer.inner.mode: expected one of fast, exact");
   EXPECT_EQ(sectionErrorOf("outer:\n  inner: 3\n"), "test.yaml: outer.inner: expected a map");

@@ -139,6 +139,54 @@ TEST(VisionPipeline, WhiteObjectsOnTheFieldGiveNoPoints) {
   EXPECT_GE(score.points, 30u);
 }
 
+/// Accepted spots within radius_px of an image point.
+int spotsWithin(const VisionResult& result, const cv::Point& centre, int radius_px) {
+  int n = 0;
+  for (const LineSpot& spot : result.spots) {
+    n += std::hypot(spot.pixel.x() - centre.x, spot.pixel.y() - centre.y) <= radius_px ? 1 : 0;
+  }
+  return n;
+}
+
+TEST(VisionPipeline, ABallAtTheFeetGivesNoPointsButTheLinesDo) {
+  // The bottom camera sees a ball 0.35 m ahead about as wide as a line there; its white patches
+  // between black ones and its rim against the turf are runs of a line's width with turf beside
+  // them. What tells them from a line is that they do not go on in the scanlines beside them.
+  testing::SyntheticStyle style;
+  style.noise_sigma = 2.0;
+  const TestView& view = testing::testView("nao-bottom", "spl", Pose2(-1.0, 0.0, 0.3), style);
+  const CameraModel camera(view.preset.intrinsics, view.preset.robot_T_camera);
+  const auto pixel = [&](double x, double y, double z) {
+    const auto p = camera.project({x, y, z});
+    return cv::Point(static_cast<int>(std::lround(p->x())), static_cast<int>(std::lround(p->y())));
+  };
+  cv::Mat image = view.image.clone();
+  const double ball_x = 0.35, ball_y = 0.12;
+  const cv::Point centre = pixel(ball_x, ball_y, 0.05);
+  const int radius = std::abs(pixel(ball_x, ball_y - 0.05, 0.05).x - centre.x);
+  cv::circle(image, centre, radius, cv::Scalar(235, 235, 235), cv::FILLED, cv::LINE_AA);
+  for (const cv::Point& offset :
+       {cv::Point(0, 0), cv::Point(-1, -1), cv::Point(1, -1), cv::Point(-1, 1), cv::Point(1, 1)}) {
+    cv::circle(image, centre + offset * (radius * 6 / 10), radius / 4, cv::Scalar(30, 30, 30),
+               cv::FILLED, cv::LINE_AA);
+  }
+  VisionConfig config = configFor(view);
+  VisionPipeline pipeline(view.preset.intrinsics, config);
+  const VisionResult result = pipeline.process(image, view.preset.robot_T_camera);
+  config.spots.continuation.enabled = false;
+  VisionPipeline without(view.preset.intrinsics, config);
+  const VisionResult result_without = without.process(image, view.preset.robot_T_camera);
+  const int on_ball = spotsWithin(result, centre, radius + 2);
+  const int on_ball_without = spotsWithin(result_without, centre, radius + 2);
+  std::printf("spots on the ball: %d (%d without the continuation test); points: %zu (%zu)\n",
+              on_ball, on_ball_without, result.ground.size(), result_without.ground.size());
+  EXPECT_GT(on_ball_without, 0);  // the case the test is for
+  EXPECT_EQ(on_ball, 0);
+  const PointScore score = testing::scorePoints(view, groundOf(result));
+  EXPECT_GE(score.precision, 0.98);
+  EXPECT_GE(static_cast<double>(result.ground.size()), 0.9 * result_without.ground.size());
+}
+
 TEST(VisionPipeline, DegenerateImagesGiveFewPoints) {
   const TestView& view = naoView();
   VisionPipeline pipeline(view.preset.intrinsics, configFor(view));

@@ -86,6 +86,18 @@ void BM_VisionPipeline(benchmark::State& state, BenchSet& (*get)()) {
   });
 }
 
+/// The pipeline without the continuation test of its spots (LineContinuationConfig): what that
+/// test costs, measured in the same run.
+void BM_VisionPipelineNoContinuation(benchmark::State& state, BenchSet& (*get)()) {
+  BenchSet& set = get();
+  VisionConfig config = configFor(set);
+  config.spots.continuation.enabled = false;
+  VisionPipeline pipeline(set.recording.intrinsicsFor(set.recording.frames[0]), config);
+  runFrames(state, set, [&](const cv::Mat& image, const Pose3& pose) {
+    return pipeline.process(image, pose).ground.size();
+  });
+}
+
 void BM_OpenCvBaseline(benchmark::State& state, BenchSet& (*get)()) {
   BenchSet& set = get();
   OpenCvLineBaseline baseline(set.recording.intrinsicsFor(set.recording.frames[0]));
@@ -144,8 +156,10 @@ void BM_VisionYuyvConvertFirst(benchmark::State& state, BenchSet& (*get)()) {
 }
 
 BENCHMARK_CAPTURE(BM_VisionPipeline, 640x480, &vga)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionPipelineNoContinuation, 640x480, &vga)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_OpenCvBaseline, 640x480, &vga)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionPipeline, 1280x720, &hd)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionPipelineNoContinuation, 1280x720, &hd)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_OpenCvBaseline, 1280x720, &hd)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionYuyvInPlace, 640x480, &vga)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionYuyvDecoded, 640x480, &vga)->Unit(benchmark::kMillisecond);

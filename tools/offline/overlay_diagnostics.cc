@@ -19,6 +19,8 @@ cv::Scalar rejectionColour(SpotRejection reason) {
       return {180, 105, 255};
     case SpotRejection::kSoftEdge:
       return {40, 80, 140};
+    case SpotRejection::kCompactBlob:
+      return {255, 255, 0};
   }
   return {255, 255, 255};
 }
