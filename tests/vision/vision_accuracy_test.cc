@@ -186,7 +186,7 @@ INSTANTIATE_TEST_SUITE_P(
                       // Hall filling half the view: 0.9994; 1.000, 0.899, 0.993.
                       AccuracyCase{"spl_nao-top_hall_close", 0.97, {0.95, 0.85, 0.93}},
                       // Dim teal carpet, greyish tape: 0.959; 0.989, 0.592, 0.660. With the
-                      // continuation test of the spots: 0.975, recall unchanged; its precision
+                      // continuation test of the spots: 0.979, recall unchanged; its precision
                       // bound is the 0.97.
                       AccuracyCase{"spl_nao-top_teal_carpet", 0.97, {0.93, 0.54, 0.60}},
                       // Dim bluish-magenta light, dark stands: 0.9986; 0.980, 0.958, 0.818.
