@@ -149,6 +149,9 @@ class SpotScanner {
     const float expected = line.dv != 0 ? expected_xy.y() : expected_xy.x();
     if (width > config_.max_width_ratio * expected + config_.width_tolerance_px) {
       reject(line, peak, SpotRejection::kTooWide, &LineSpotStats::too_wide);
+      if (stats_ && stats_->too_wide_runs.size() < LineSpotStats::kMaxTooWideRuns) {
+        stats_->too_wide_runs.push_back({{u, v}, width, expected, line.dv != 0});
+      }
       return;
     }
     if (width < config_.min_width_ratio * expected - 1.f || expected <= 0.f) {

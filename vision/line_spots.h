@@ -81,8 +81,13 @@ struct LineSpotStats {
   int too_wide = 0;
   int not_green_bounded = 0;
   int not_white = 0;
-  int soft_edge = 0;                   ///< edges ramping too slowly for paint (round bars)
-  int compact_blob = 0;                ///< runs that do not go on beside them (ball, feet)
+  int soft_edge = 0;     ///< edges ramping too slowly for paint (round bars)
+  int compact_blob = 0;  ///< runs that do not go on beside them (ball, feet)
+  /// The first kMaxTooWideRuns candidates rejected as too wide, as spots (pixel, width, expected,
+  /// scan direction): a frame whose candidates are all too wide may have a pose that is off
+  /// (width_pitch.h).
+  std::vector<LineSpot> too_wide_runs;
+  static constexpr std::size_t kMaxTooWideRuns = 256;
   std::vector<RejectedSpot> rejected;  ///< only with LineSpotConfig::keep_rejected
 };
 

@@ -59,11 +59,10 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   checkPixelLayout(image);
 
   // 1. Horizon from the (corrected) camera pose.
-  const Pose3 pose = corrector_->corrected(robot_T_camera);
-  if (!samePose(pose, camera_.pose())) camera_.setPose(pose);
-  result.robot_T_camera_used = pose;
-  result.horizon_rows = camera_.horizonRows();
-  const std::vector<int> start_rows = scanStartRows(camera_, config_.horizon);
+  Pose3 recorded = robot_T_camera;
+  Pose3 pose = corrector_->corrected(recorded);
+  usePose(pose, &result);
+  std::vector<int> start_rows = scanStartRows(camera_, config_.horizon);
   // 2-3. Field colour from this frame, then the field boundary.
   const bool remembered = field_color_age_ <= config_.field_color.memory_frames;
   diag.field_color = estimateFieldColor(image, start_rows, config_.field_color,
@@ -74,14 +73,26 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   } else if (field_color_age_ <= config_.field_color.memory_frames) {
     ++field_color_age_;
   }
-  result.boundary = detectFieldBoundary(image, diag.field_color, start_rows, config_.boundary);
   diag.time_color_ms = msSince(&step);
 
-  // 4. Line spots on a distance-adapted scan grid below the boundary.
-  const LineWidthModel widths(camera_, config_.line_width_m, config_.line_width);
-  const ScanGrid grid = makeScanGrid(camera_, widths, result.boundary, config_.scan_grid);
-  result.spots = detectLineSpots(image, diag.field_color, result.boundary, grid, widths,
-                                 config_.spots, &diag.spot_stats);
+  // 3-4. The field boundary, then line spots on a distance-adapted scan grid below it.
+  findSpots(image, start_rows, &result);
+  // Beyond the recorded pose: a frame whose candidates were all too wide for it is scanned again
+  // with the camera pitch their widths ask for (width_pitch.h); from here on the frame is
+  // processed as if recorded with that pitch.
+  if (result.spots.empty()) {
+    const std::optional<double> offset = fitPitchToWidths(camera_, diag.spot_stats.too_wide_runs,
+                                                          config_.spots, config_.width_pitch);
+    if (offset) {
+      recorded.pitch += *offset;
+      pose = corrector_->corrected(recorded);
+      usePose(pose, &result);
+      start_rows = scanStartRows(camera_, config_.horizon);
+      diag.spot_stats = LineSpotStats{};  // the second scan's
+      findSpots(image, start_rows, &result);
+      diag.width_pitch_rad = *offset;
+    }
+  }
   diag.num_spots = static_cast<int>(result.spots.size());
   diag.time_spots_ms = msSince(&step);
 
@@ -93,10 +104,9 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
       spotRays(camera_, result.spots), pose, config_.own_body, &diag.dropped_on_own_body);
   diag.time_project_ms = msSince(&step);
   result.features = fitLineFeatures(all_rays, pose, config_.projection, config_.segments);
-  diag.pose_correction_updated =
-      corrector_->update(result.features.segments, result.features.circles, robot_T_camera,
-                         {&all_rays, field_T_robot});
-  const Pose3 refined = corrector_->corrected(robot_T_camera);
+  diag.pose_correction_updated = corrector_->update(
+      result.features.segments, result.features.circles, recorded, {&all_rays, field_T_robot});
+  const Pose3 refined = corrector_->corrected(recorded);
   if (!samePose(refined, pose)) {
     result.robot_T_camera_used = refined;
     // The horizon and the visible region follow only noticeable changes (setPose recomputes
@@ -112,8 +122,7 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   if (diag.dropped_near_boundary > 0 || !samePose(refined, pose)) {
     result.features = fitLineFeatures(rays, refined, config_.projection, config_.segments);
   }
-  diag.pose_correction_rad = {refined.roll - robot_T_camera.roll,
-                              refined.pitch - robot_T_camera.pitch};
+  diag.pose_correction_rad = {refined.roll - recorded.roll, refined.pitch - recorded.pitch};
   diag.pose_correction_estimate_rad = corrector_->estimate();
   diag.pose_correction_sigma_rad = corrector_->estimateSigma();
   diag.pose_correction_map_inliers = corrector_->lastMapInliers();
@@ -128,6 +137,22 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   diag.time_project_ms += msSince(&step);
   diag.time_total_ms = msSince(&start);
   return result;
+}
+
+void VisionPipeline::usePose(const Pose3& pose, VisionResult* result) {
+  if (!samePose(pose, camera_.pose())) camera_.setPose(pose);
+  result->robot_T_camera_used = pose;
+  result->horizon_rows = camera_.horizonRows();
+}
+
+void VisionPipeline::findSpots(const cv::Mat& image, const std::vector<int>& start_rows,
+                               VisionResult* result) const {
+  VisionDiagnostics& diag = result->diagnostics;
+  result->boundary = detectFieldBoundary(image, diag.field_color, start_rows, config_.boundary);
+  const LineWidthModel widths(camera_, config_.line_width_m, config_.line_width);
+  const ScanGrid grid = makeScanGrid(camera_, widths, result->boundary, config_.scan_grid);
+  result->spots = detectLineSpots(image, diag.field_color, result->boundary, grid, widths,
+                                  config_.spots, &diag.spot_stats);
 }
 
 }  // namespace houghloc

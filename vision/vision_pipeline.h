@@ -21,6 +21,7 @@
 #include "vision/line_width_model.h"
 #include "vision/own_body.h"
 #include "vision/scan_grid.h"
+#include "vision/width_pitch.h"
 
 namespace houghloc {
 
@@ -38,6 +39,7 @@ struct VisionConfig {
   FieldEdgeSamplingConfig field_edge;
   LineSegmentConfig segments;
   CameraPoseCorrectionConfig pose_correction;
+  WidthPitchConfig width_pitch;  ///< a frame whose candidates are all too wide: fit the pitch
 };
 
 /// Per-step times and counts of one frame, for tuning and the offline summary.
@@ -56,6 +58,10 @@ struct VisionDiagnostics {
   Eigen::Vector2d pose_correction_sigma_rad =
       Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
   int pose_correction_map_inliers = 0;  ///< this frame's points matched to the map (0: none)
+  /// Pitch offset (rad) fitted to the widths of this frame's too-wide candidates and added to
+  /// its recorded pose before a second scan (width_pitch.h); 0 when the first scan found spots
+  /// or no offset explained the widths.
+  double width_pitch_rad = 0.0;
   double time_total_ms = 0.0;
   double time_color_ms = 0.0;     ///< horizon, field colour, boundary
   double time_spots_ms = 0.0;     ///< width model, scan grid, spot detection
@@ -109,6 +115,14 @@ class VisionPipeline {
   void resetPoseCorrection() { corrector_->reset(); }
 
  private:
+  /// Points camera_ at `pose` (the corrected recorded pose) and writes it and the horizon into
+  /// `result`.
+  void usePose(const Pose3& pose, VisionResult* result);
+  /// Steps 3-4 with camera_'s pose and the frame's field colour: the field boundary below
+  /// `start_rows`, the width model, the scan grid and the line spots, into `result`.
+  void findSpots(const cv::Mat& image, const std::vector<int>& start_rows,
+                 VisionResult* result) const;
+
   VisionConfig config_;
   int camera_id_ = 0;
   CameraModel camera_;

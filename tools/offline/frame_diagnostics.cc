@@ -1,5 +1,7 @@
 #include "tools/offline/frame_diagnostics.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace houghloc {
@@ -10,6 +12,12 @@ FrameDiagnostics::FrameDiagnostics(const std::string& spots_csv)
 void FrameDiagnostics::add(const FrameRecord& frame, const CameraIntrinsics& intrinsics,
                            const VisionResult& result, const GroundProjectionConfig& projection) {
   ++counts_[static_cast<size_t>(classifyFrame(result))];
+  if (const double offset = result.diagnostics.width_pitch_rad; offset != 0.0) {
+    const double deg = offset * 180.0 / M_PI;
+    width_pitch_min_deg_ = width_pitch_frames_ == 0 ? deg : std::min(width_pitch_min_deg_, deg);
+    width_pitch_max_deg_ = width_pitch_frames_ == 0 ? deg : std::max(width_pitch_max_deg_, deg);
+    ++width_pitch_frames_;
+  }
   const CameraModel camera(intrinsics, result.robot_T_camera_used);
   const std::vector<SpotRay> rays = spotRays(camera, result.spots);
   const GroundProjector projector(result.robot_T_camera_used);
@@ -35,6 +43,12 @@ void FrameDiagnostics::print() const {
     separator = ",";
   }
   std::printf("\n");
+  if (width_pitch_frames_ > 0) {
+    std::printf(
+        "  frames scanned again with the camera pitch their too-wide candidates ask for: %d "
+        "(offset %+.1f to %+.1f deg; the recorded pose may be off)\n",
+        width_pitch_frames_, width_pitch_min_deg_, width_pitch_max_deg_);
+  }
 }
 
 }  // namespace houghloc

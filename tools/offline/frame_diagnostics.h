@@ -20,12 +20,15 @@ class FrameDiagnostics {
   void add(const FrameRecord& frame, const CameraIntrinsics& intrinsics, const VisionResult& result,
            const GroundProjectionConfig& projection);
   void close() { spots_.close(); }
-  /// "frames without points: ..." with one count per reason.
+  /// "frames without points: ..." with one count per reason, and the frames whose pitch was
+  /// fitted to their candidates' widths (width_pitch.h).
   void print() const;
 
  private:
   CsvWriter spots_;
   std::array<int, kNumFrameRejections> counts_{};
+  int width_pitch_frames_ = 0;  ///< frames scanned again with a pitch fitted to line widths
+  double width_pitch_min_deg_ = 0.0, width_pitch_max_deg_ = 0.0;
 };
 
 }  // namespace houghloc

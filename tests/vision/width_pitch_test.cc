@@ -1,0 +1,74 @@
+#include "vision/width_pitch.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "vision/camera_presets.h"
+
+namespace houghloc {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+constexpr double kLineWidth = 0.05;
+
+/// Runs as the vision records them when it rejects candidates as too wide: the width a line has
+/// in the image of `truth` (the camera's real pose), the width `recorded` (the pose the vision
+/// was given) expects, at pixels on a grid below both horizons.
+std::vector<LineSpot> runsOfLines(const CameraModel& recorded, const CameraModel& truth) {
+  std::vector<LineSpot> runs;
+  for (int v = 20; v < recorded.height(); v += 23) {
+    for (int u = 30; u < recorded.width(); u += 61) {
+      const auto seen = truth.expectedLineWidthPx(u, v, kLineWidth);
+      const auto expected = recorded.expectedLineWidthPx(u, v, kLineWidth);
+      if (!seen || !expected) continue;
+      const bool vertical = (u + v) % 2 == 0;
+      runs.push_back({Eigen::Vector2f(u, v), static_cast<float>(vertical ? seen->y() : seen->x()),
+                      static_cast<float>(vertical ? expected->y() : expected->x()), vertical});
+    }
+  }
+  return runs;
+}
+
+TEST(WidthPitch, FindsThePitchTheWidthsAskFor) {
+  const CameraPreset preset = cameraPreset("nao-top");
+  const CameraModel recorded(preset.intrinsics, preset.robot_T_camera);
+  for (const double error_deg : {-15.0, -6.0, 8.0}) {
+    Pose3 real = preset.robot_T_camera;
+    real.pitch += error_deg * kDeg;
+    const CameraModel truth(preset.intrinsics, real);
+    const std::vector<LineSpot> runs = runsOfLines(recorded, truth);
+    ASSERT_GE(runs.size(), 20u) << error_deg;
+    const std::optional<double> offset =
+        fitPitchToWidths(recorded, runs, LineSpotConfig{}, WidthPitchConfig{});
+    ASSERT_TRUE(offset.has_value()) << error_deg;
+    // The width tests accept 0.4-1.7x the expected width, so several offsets pass every run; the
+    // one kept lies within a few degrees of the error.
+    EXPECT_NEAR(*offset / kDeg, error_deg, 4.0) << error_deg;
+  }
+}
+
+TEST(WidthPitch, NoOffsetForWidthsNoPitchExplains) {
+  const CameraPreset preset = cameraPreset("nao-top");
+  const CameraModel recorded(preset.intrinsics, preset.robot_T_camera);
+  std::vector<LineSpot> runs = runsOfLines(recorded, recorded);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> factor(3.0f, 40.0f);
+  // Each run too wide by its own random factor (robots, feet, a ball): no one pitch fits most.
+  for (LineSpot& run : runs) run.width_px = run.expected_px * factor(random) + 3.0f;
+  EXPECT_FALSE(fitPitchToWidths(recorded, runs, LineSpotConfig{}, WidthPitchConfig{}));
+  // Too few runs, or the fit switched off.
+  const std::vector<LineSpot> few(runs.begin(), runs.begin() + 3);
+  EXPECT_FALSE(fitPitchToWidths(recorded, few, LineSpotConfig{}, WidthPitchConfig{}));
+  WidthPitchConfig off;
+  off.enabled = false;
+  Pose3 real = preset.robot_T_camera;
+  real.pitch -= 10 * kDeg;
+  EXPECT_FALSE(fitPitchToWidths(recorded,
+                                runsOfLines(recorded, CameraModel(preset.intrinsics, real)),
+                                LineSpotConfig{}, off));
+}
+
+}  // namespace
+}  // namespace houghloc

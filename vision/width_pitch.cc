@@ -1,0 +1,77 @@
+#include "vision/width_pitch.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace houghloc {
+namespace {
+
+/// Whether a run of `width` px has a line's width where `expected` px is expected (the width
+/// tests of the spot check, LineSpotConfig).
+bool lineWidth(double width, double expected, const LineSpotConfig& spots) {
+  return expected > 0.0 && width <= spots.max_width_ratio * expected + spots.width_tolerance_px &&
+         width >= spots.min_width_ratio * expected - 1.0;
+}
+
+}  // namespace
+
+std::optional<double> fitPitchToWidths(const CameraModel& camera, const std::vector<LineSpot>& runs,
+                                       const LineSpotConfig& spots,
+                                       const WidthPitchConfig& config) {
+  if (!config.enabled || !(config.step_rad > 0.0)) return std::nullopt;
+  if (static_cast<int>(runs.size()) < config.min_runs) return std::nullopt;
+  // Each run's ray depression below the horizontal (alpha) and the width the pose expects for
+  // it. Pitching the camera by delta turns every ray by delta in depression; on a pinhole camera
+  // a ground line's width at the same pixel then scales with sin(alpha + delta) / sin(alpha)
+  // along a row and with its square along a column (the pixel's angle to the optical axis, and
+  // with it the lens' local scale, stays). Roll is left out: the fit is of the pitch only.
+  struct Run {
+    double alpha;     ///< rad
+    double expected;  ///< px, at the pose's pitch
+    double width;     ///< px, measured
+    int power;        ///< 1 along a row, 2 along a column
+  };
+  std::vector<Run> used;
+  const std::size_t stride = std::max<std::size_t>(
+      1, runs.size() / static_cast<std::size_t>(std::max(1, config.max_runs)));
+  for (std::size_t i = 0; i < runs.size(); i += stride) {
+    const LineSpot& run = runs[i];
+    const Eigen::Vector3d ray = camera.pixelRay(run.pixel.x(), run.pixel.y());
+    if (!ray.allFinite() || !(ray.z() < 0.0) || !(run.expected_px > 0.f)) continue;
+    used.push_back({std::asin(std::min(1.0, -ray.z())), run.expected_px, run.width_px,
+                    run.vertical_scan ? 2 : 1});
+  }
+  if (static_cast<int>(used.size()) < config.min_runs) return std::nullopt;
+  // The offset that gives most runs a line's width; among equally many, the one whose widths
+  // fit best (least summed |log(width / expected)| over those runs), since the width tests'
+  // wide band passes a run over a range of offsets.
+  const int steps = static_cast<int>(std::floor(config.max_offset_rad / config.step_rad));
+  int best_votes = 0;
+  double best_misfit = 0.0, best_offset = 0.0;
+  for (int k = -steps; k <= steps; ++k) {
+    const double offset = k * config.step_rad;
+    if (k == 0) continue;  // the pose's own pitch, which found no spot
+    int votes = 0;
+    double misfit = 0.0;
+    for (const Run& run : used) {
+      const double alpha = run.alpha + offset;
+      if (alpha <= 0.0 || alpha >= M_PI / 2) continue;
+      const double scale = std::sin(alpha) / std::sin(run.alpha);
+      const double expected = run.expected * (run.power == 2 ? scale * scale : scale);
+      if (!lineWidth(run.width, expected, spots)) continue;
+      ++votes;
+      misfit += std::abs(std::log(std::max(run.width, 0.5) / expected));
+    }
+    if (votes > best_votes || (votes == best_votes && votes > 0 && misfit < best_misfit)) {
+      best_votes = votes;
+      best_misfit = misfit;
+      best_offset = offset;
+    }
+  }
+  const bool enough = best_votes >= config.min_runs &&
+                      best_votes >= config.min_share * static_cast<double>(used.size());
+  if (!enough) return std::nullopt;
+  return best_offset;
+}
+
+}  // namespace houghloc
