@@ -45,7 +45,9 @@ std::optional<double> fitPitchToWidths(const CameraModel& camera, const std::vec
   // The offset that gives most runs a line's width; among equally many, the one whose widths
   // fit best (least summed |log(width / expected)| over those runs), since the width tests'
   // wide band passes a run over a range of offsets.
-  const int steps = static_cast<int>(std::floor(config.max_offset_rad / config.step_rad));
+  // At most a quarter turn either way, in at most 10 000 steps: a config typo cannot hang it.
+  const double reach = std::min(config.max_offset_rad, M_PI / 2);
+  const int steps = static_cast<int>(std::min(1e4, std::floor(reach / config.step_rad)));
   int best_votes = 0;
   double best_misfit = 0.0, best_offset = 0.0;
   for (int k = -steps; k <= steps; ++k) {

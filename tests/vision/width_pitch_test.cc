@@ -65,9 +65,15 @@ TEST(WidthPitch, NoOffsetForWidthsNoPitchExplains) {
   off.enabled = false;
   Pose3 real = preset.robot_T_camera;
   real.pitch -= 10 * kDeg;
-  EXPECT_FALSE(fitPitchToWidths(recorded,
-                                runsOfLines(recorded, CameraModel(preset.intrinsics, real)),
-                                LineSpotConfig{}, off));
+  const std::vector<LineSpot> pitched = runsOfLines(recorded, CameraModel(preset.intrinsics, real));
+  EXPECT_FALSE(fitPitchToWidths(recorded, pitched, LineSpotConfig{}, off));
+  // A config typo (a step of 1e-12 rad, offsets up to 1e9 rad) returns at once, with an offset
+  // within a quarter turn.
+  WidthPitchConfig typo;
+  typo.step_rad = 1e-12;
+  typo.max_offset_rad = 1e9;
+  const std::optional<double> any = fitPitchToWidths(recorded, pitched, LineSpotConfig{}, typo);
+  if (any) EXPECT_LE(std::abs(*any), M_PI / 2);
 }
 
 }  // namespace
