@@ -22,6 +22,8 @@ class SpotScanner {
     dark_luma_ = static_cast<int>(config.dark_luma_ratio * color.luma_median);
   }
 
+  std::size_t spotCount() const { return spots_->size(); }
+
   template <typename Run>
   void scan(const Scanline<Run>& line) const {
     constexpr int kEdgeGap = 2;  // compare with the pixel two back: tolerates one blurred pixel
@@ -147,16 +149,18 @@ class SpotScanner {
     const float u = line.u0 + line.du * centre, v = line.v0 + line.dv * centre;
     const Eigen::Vector2f expected_xy = widths_.expectedPx(u, v);
     const float expected = line.dv != 0 ? expected_xy.y() : expected_xy.x();
-    if (width > config_.max_width_ratio * expected + config_.width_tolerance_px) {
-      reject(line, peak, SpotRejection::kTooWide, &LineSpotStats::too_wide);
-      if (stats_ && stats_->too_wide_runs.size() < LineSpotStats::kMaxTooWideRuns) {
-        stats_->too_wide_runs.push_back({{u, v}, width, expected, line.dv != 0});
-      }
-      return;
-    }
-    if (width < config_.min_width_ratio * expected - 1.f || expected <= 0.f) {
-      reject(line, peak, SpotRejection::kTooNarrow, &LineSpotStats::too_narrow);
-      return;
+    switch (compareLineWidth(width, expected, config_)) {
+      case WidthFit::kTooWide:
+        reject(line, peak, SpotRejection::kTooWide, &LineSpotStats::too_wide);
+        if (stats_ && stats_->too_wide_runs.size() < LineSpotStats::kMaxTooWideRuns) {
+          stats_->too_wide_runs.push_back({{u, v}, width, expected, line.dv != 0});
+        }
+        return;
+      case WidthFit::kTooNarrow:
+        reject(line, peak, SpotRejection::kTooNarrow, &LineSpotStats::too_narrow);
+        return;
+      case WidthFit::kLine:
+        break;
     }
     const float max_ramp = static_cast<float>(
         std::max(config_.max_edge_ramp_px, config_.max_edge_ramp_ratio * expected));
@@ -188,19 +192,18 @@ class SpotScanner {
 };
 
 /// Scans the grid's columns, then its rows, each stretch below the boundary and above the
-/// robot's body, into `spots_out` (the scanner's spots); each scanline's spots are checked
+/// robot's body, into the scanner's spots; each scanline's spots are checked
 /// against the scanlines beside them before the next scanline is read.
 template <typename Pixels>
 void scanGrid(const Pixels& pixels, const FieldBoundary& boundary, const ScanGrid& grid,
-              const SpotScanner& scanner, std::vector<LineSpot>* spots_out) {
+              const SpotScanner& scanner) {
   RunBuffer buffer;         // one scanline's decoded pixels (formats not read in place)
   RunBuffer beside_buffer;  // ... and those of the scanlines beside a spot
-  std::vector<LineSpot>& spots = *spots_out;
   for (const ScanGrid::Column& column : grid.columns) {
     const int end = std::min(column.v_end, static_cast<int>(boundary.bodyRowAt(column.u)));
     const int n = end - column.v_begin;
     if (n < 4) continue;
-    const std::size_t first = spots.size();
+    const std::size_t first = scanner.spotCount();
     scanner.scan(scanline(pixels.columnRun(column.u, column.v_begin, n, &buffer), n, column.u,
                           column.v_begin, 0, 1));
     scanner.dropCompactBlobs(pixels, first, &beside_buffer);
@@ -216,7 +219,7 @@ void scanGrid(const Pixels& pixels, const FieldBoundary& boundary, const ScanGri
       const int begin = u;
       while (u < pixels.cols() && field(u)) ++u;
       if (u - begin >= 4) {
-        const std::size_t first = spots.size();
+        const std::size_t first = scanner.spotCount();
         scanner.scan(
             scanline(pixels.rowRun(begin, v, u - begin, &buffer), u - begin, begin, v, 1, 0));
         scanner.dropCompactBlobs(pixels, first, &beside_buffer);
@@ -227,6 +230,16 @@ void scanGrid(const Pixels& pixels, const FieldBoundary& boundary, const ScanGri
 
 }  // namespace
 
+WidthFit compareLineWidth(double width_px, double expected_px, const LineSpotConfig& config) {
+  if (width_px > config.max_width_ratio * expected_px + config.width_tolerance_px) {
+    return WidthFit::kTooWide;
+  }
+  if (width_px < config.min_width_ratio * expected_px - 1.0 || expected_px <= 0.0) {
+    return WidthFit::kTooNarrow;
+  }
+  return WidthFit::kLine;
+}
+
 std::vector<LineSpot> detectLineSpots(const cv::Mat& image, const FieldColor& color,
                                       const FieldBoundary& boundary, const ScanGrid& grid,
                                       const LineWidthModel& widths, const LineSpotConfig& config,
@@ -234,8 +247,7 @@ std::vector<LineSpot> detectLineSpots(const cv::Mat& image, const FieldColor& co
   std::vector<LineSpot> spots;
   if (!color.valid || !boundary.found) return spots;
   const SpotScanner scanner(color, widths, config, &spots, stats);
-  visitPixels(image,
-              [&](const auto& pixels) { scanGrid(pixels, boundary, grid, scanner, &spots); });
+  visitPixels(image, [&](const auto& pixels) { scanGrid(pixels, boundary, grid, scanner); });
   return spots;
 }
 

@@ -58,6 +58,11 @@ struct LineSpot {
   bool vertical_scan = false;
 };
 
+/// How a run's width compares with the width a line has at its pixel (LineSpotConfig's width
+/// tests): the spot check and the width pitch fit (width_pitch.h) judge runs alike.
+enum class WidthFit { kLine, kTooWide, kTooNarrow };
+WidthFit compareLineWidth(double width_px, double expected_px, const LineSpotConfig& config);
+
 /// Why a candidate was rejected.
 enum class SpotRejection {
   kTooNarrow,

@@ -4,17 +4,6 @@
 #include <cmath>
 
 namespace houghloc {
-namespace {
-
-/// Whether a run of `width` px has a line's width where `expected` px is expected (the width
-/// tests of the spot check, LineSpotConfig).
-bool lineWidth(double width, double expected, const LineSpotConfig& spots) {
-  return expected > 0.0 && width <= spots.max_width_ratio * expected + spots.width_tolerance_px &&
-         width >= spots.min_width_ratio * expected - 1.0;
-}
-
-}  // namespace
-
 std::optional<double> fitPitchToWidths(const CameraModel& camera, const std::vector<LineSpot>& runs,
                                        const LineSpotConfig& spots,
                                        const WidthPitchConfig& config) {
@@ -60,7 +49,7 @@ std::optional<double> fitPitchToWidths(const CameraModel& camera, const std::vec
       if (alpha <= 0.0 || alpha >= M_PI / 2) continue;
       const double scale = std::sin(alpha) / std::sin(run.alpha);
       const double expected = run.expected * (run.power == 2 ? scale * scale : scale);
-      if (!lineWidth(run.width, expected, spots)) continue;
+      if (compareLineWidth(run.width, expected, spots) != WidthFit::kLine) continue;
       ++votes;
       misfit += std::abs(std::log(std::max(run.width, 0.5) / expected));
     }

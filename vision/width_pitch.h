@@ -9,7 +9,7 @@
 namespace houghloc {
 
 /// A frame whose line candidates are all too wide for the recorded camera pose is, on a real
-/// robot, most often a frame whose pose is off: a head pitched or a body leaning a few to 20 deg
+/// robot, most often a frame whose pose is off: a head pitched or a body leaning a few to 30 deg
 /// more than the kinematics say, so the lines are nearer than the pose puts them. The widths
 /// themselves tell the pitch: a line's width in the image grows with its row's distance below
 /// the horizon (linearly along a row, quadratically along a column).
