@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "localization/frame_tilt.h"
 #include "localization/point_update.h"
 
 namespace houghloc {
@@ -88,10 +89,14 @@ void HypothesisTracker::correct(const GroundPoints& points) {
   const double best_weight = hypotheses_.front().pose.weight;
   std::vector<double> log_likelihood(hypotheses_.size());
   const bool judge = stats_.points_in >= config_.min_points_to_judge;
+  std::vector<GaussianPose> priors;
+  priors.reserve(hypotheses_.size());
+  for (const TrackedHypothesis& h : hypotheses_) priors.push_back(h.pose);
+  const std::vector<PointUpdateResult> results = updateWithOneFrameTilt(
+      priors, points.points, *index_, config_.update, config_.likelihood_points);
   for (size_t k = 0; k < hypotheses_.size(); ++k) {
     TrackedHypothesis& h = hypotheses_[k];
-    const PointUpdateResult r =
-        updateWithGroundPoints(h.pose, points.points, *index_, config_.update);
+    const PointUpdateResult& r = results[k];
     h.pose = r.posterior;
     h.inlier_share = r.inlier_share;
     h.points_associated = r.num_associated;

@@ -166,7 +166,8 @@ PointUpdateResult fitPose(const GaussianPose& prior, const std::vector<GroundPoi
     result.corrected = true;
     // Later iterations gate with the shrinking posterior, which rejects more outliers.
     gate_cov = inverseOf<N>(info);
-    converged = step.template head<2>().norm() < cfg.converged_m && std::abs(step(2)) < cfg.converged_rad;
+    converged =
+        step.template head<2>().norm() < cfg.converged_m && std::abs(step(2)) < cfg.converged_rad;
     // A hypothesis that explains few points is judged by its likelihood, not polished.
     converged = converged || acc.used < cfg.poor_association_share * acc.processed;
     if (converged && (stride <= 1 || final_pass)) break;
@@ -210,6 +211,11 @@ PointUpdateResult updateWithGroundPoints(const GaussianPose& prior,
   // the tilt adds freedom that noise would use too.
   PointUpdateResult rigid = fitPose<kPose>(prior, points, index, cfg, Eigen::Vector2d::Zero());
   if (tilt_sigma.isZero() || !(rigid.mean_log_likelihood < -cfg.tilt_min_gain)) return rigid;
+  // Points that do not say how a tilt moves them (tilt_jacobian zero: not from a camera model)
+  // cannot show one.
+  const bool tilt_observable = std::any_of(
+      points.begin(), points.end(), [](const GroundPoint& p) { return !p.tilt_jacobian.isZero(); });
+  if (!tilt_observable) return rigid;
   PointUpdateResult tilted = fitPose<kPoseAndTilt>(prior, points, index, cfg, tilt_sigma);
   return tilted.mean_log_likelihood >= rigid.mean_log_likelihood + cfg.tilt_min_gain ? tilted
                                                                                      : rigid;

@@ -56,7 +56,7 @@ struct PointUpdateConfig {
   /// it explains the points by tilt_min_gain better: a tilted camera then shifts no pose that
   /// odometry holds, and the hypothesis where the robot is keeps explaining the points. The
   /// tilt is the frame's own; one that stays is the CameraPoseCorrector's to remove.
-  double pitch_sigma_rad = 0.0;  ///< off by default: docs/tracking.md "Camera tilt"
+  double pitch_sigma_rad = 0.035;  ///< 2 deg; docs/tracking.md "Camera tilt"
   double roll_sigma_rad = 0.0;
   double tilt_min_gain = 0.5;  ///< mean per-point log-likelihood
 };

@@ -10,6 +10,7 @@
 #include "field_models/field_distance.h"
 #include "field_models/standard_fields.h"
 #include "localization/feature_index.h"
+#include "localization/frame_tilt.h"
 
 namespace houghloc {
 namespace {
@@ -198,7 +199,9 @@ TEST(PointUpdate, TiltedCameraIsFittedAsTiltNotAsAMovedRobot) {
   EXPECT_GT(fitted.mean_log_likelihood, clean.mean_log_likelihood - 0.05);
   EXPECT_NEAR(clean.tilt.norm(), 0.0, 1e-3);
 
-  const PointUpdateResult rigid = updateWithGroundPoints(prior, tilted, index, {});  // default
+  PointUpdateConfig held;
+  held.pitch_sigma_rad = 0.0;  // the recorded pitch taken as exact
+  const PointUpdateResult rigid = updateWithGroundPoints(prior, tilted, index, held);
   EXPECT_EQ(rigid.tilt, Eigen::Vector2d::Zero());
   EXPECT_LT(rigid.mean_log_likelihood, fitted.mean_log_likelihood - 0.3);
   std::printf(
@@ -208,6 +211,95 @@ TEST(PointUpdate, TiltedCameraIsFittedAsTiltNotAsAMovedRobot) {
       angleDifference(fitted.posterior.mean.theta, truth.theta) * 180.0 / M_PI,
       fitted.tilt.y() * 180.0 / M_PI, fitted.mean_log_likelihood, clean.mean_log_likelihood,
       rigid.mean_log_likelihood);
+}
+
+// The first-order move of pointsWithTilt against the projection itself: a 2 deg pitch error
+// moves these points (0.4-4 m ahead) by up to 0.44 m; undone by the tilt Jacobian, the farthest
+// stay 6.5 cm off where the exact camera puts them (the move grows faster than linearly with
+// the angle there), the rest less.
+TEST(FrameTilt, PointsWithTiltUndoAPitchError) {
+  const FieldModel field = makeStandardField("spl");
+  const Pose2 truth(-2.0, -1.0, M_PI);
+  const double pitch_error = 2.0 * M_PI / 180.0;
+  const std::vector<GroundPoint> tilted = tiltedView(field, truth, pitch_error);
+  const std::vector<GroundPoint> exact = tiltedView(field, truth, 0.0);
+  ASSERT_EQ(tilted.size(), exact.size());
+  const std::vector<GroundPoint> undone =
+      pointsWithTilt(tilted, Eigen::Vector2d(0.0, -pitch_error));
+  double largest_move = 0.0, largest_error = 0.0;
+  for (size_t i = 0; i < exact.size(); ++i) {
+    largest_move = std::max(largest_move, (tilted[i].p_robot - exact[i].p_robot).norm());
+    largest_error = std::max(largest_error, (undone[i].p_robot - exact[i].p_robot).norm());
+  }
+  std::printf("2 deg pitch error: points moved by up to %.3f m, %.3f m after pointsWithTilt\n",
+              largest_move, largest_error);
+  EXPECT_GT(largest_move, 0.3);
+  EXPECT_LT(largest_error, 0.2 * largest_move);
+}
+
+GaussianPose hypothesisAt(const Pose2& mean, double weight) {
+  GaussianPose pose;
+  pose.mean = mean;
+  pose.covariance = Eigen::Vector3d(0.03 * 0.03, 0.03 * 0.03, 0.02 * 0.02).asDiagonal();
+  pose.weight = weight;
+  return pose;
+}
+
+// The camera_pitch_error fault (docs/reliability.md): the track's camera is 2 deg off, and a
+// hypothesis elsewhere must be judged by the same camera, not by a tilt of its own.
+TEST(FrameTilt, TheMostProbableHypothesisSetsTheTiltForAll) {
+  const FieldModel field = makeStandardField("spl");
+  const FeatureIndex index(field);
+  const Pose2 truth(-2.0, -1.0, M_PI);
+  const std::vector<GroundPoint> tilted = tiltedView(field, truth, 2.0 * M_PI / 180.0);
+  const std::vector<GaussianPose> priors = {hypothesisAt(truth, 0.9),
+                                            hypothesisAt(Pose2(-2.2, -0.85, M_PI), 0.1)};
+  PointUpdateConfig config;
+  config.pitch_sigma_rad = 2.0 * M_PI / 180.0;
+  const std::vector<PointUpdateResult> frame =
+      updateWithOneFrameTilt(priors, tilted, index, config, 8.0);
+  ASSERT_EQ(frame.size(), 2u);
+  const PointUpdateResult own_track = updateWithGroundPoints(priors[0], tilted, index, config);
+  const PointUpdateResult own_other = updateWithGroundPoints(priors[1], tilted, index, config);
+  std::printf(
+      "own fits: track pitch %.2f deg, mean log-lik %.3f; other %.2f deg, %.3f; other at "
+      "the track's tilt %.3f\n",
+      own_track.tilt.y() * 180.0 / M_PI, own_track.mean_log_likelihood,
+      own_other.tilt.y() * 180.0 / M_PI, own_other.mean_log_likelihood,
+      frame[1].mean_log_likelihood);
+  // Not vacuous: the other hypothesis would fit a tilt of its own.
+  ASSERT_GT((own_other.tilt - own_track.tilt).norm(), 0.1 * M_PI / 180.0);
+  EXPECT_EQ(frame[0].tilt, own_track.tilt);
+  EXPECT_EQ(frame[0].posterior.mean.translation(), own_track.posterior.mean.translation());
+  EXPECT_EQ(frame[1].tilt, own_track.tilt);
+  EXPECT_LE(frame[1].mean_log_likelihood, own_other.mean_log_likelihood);
+}
+
+// The other way round: a view the exact camera explains at the truth; a more probable-looking
+// hypothesis elsewhere that only a tilt makes fit must not lend the frame that tilt.
+TEST(FrameTilt, AWrongPlaceGetsNoTiltThatTheTruthDoesNotNeed) {
+  const FieldModel field = makeStandardField("spl");
+  const FeatureIndex index(field);
+  const Pose2 truth(-2.0, -1.0, M_PI);
+  const std::vector<GroundPoint> exact = tiltedView(field, truth, 0.0);
+  const std::vector<GaussianPose> priors = {hypothesisAt(Pose2(-2.25, -1.0, M_PI), 0.6),
+                                            hypothesisAt(truth, 0.4)};
+  PointUpdateConfig config;
+  config.pitch_sigma_rad = 2.0 * M_PI / 180.0;
+  const PointUpdateResult own_wrong = updateWithGroundPoints(priors[0], exact, index, config);
+  std::printf("wrong place: own pitch %.2f deg, mean log-lik %.3f\n",
+              own_wrong.tilt.y() * 180.0 / M_PI, own_wrong.mean_log_likelihood);
+  ASSERT_FALSE(own_wrong.tilt.isZero());  // not vacuous: alone it would take a tilt
+  const std::vector<PointUpdateResult> frame =
+      updateWithOneFrameTilt(priors, exact, index, config, 8.0);
+  PointUpdateConfig held = config;
+  held.pitch_sigma_rad = 0.0;
+  const PointUpdateResult rigid_wrong = updateWithGroundPoints(priors[0], exact, index, held);
+  EXPECT_EQ(frame[1].tilt, Eigen::Vector2d::Zero());
+  EXPECT_EQ(frame[0].tilt, Eigen::Vector2d::Zero());
+  EXPECT_EQ(frame[0].mean_log_likelihood, rigid_wrong.mean_log_likelihood);
+  EXPECT_LT(frame[0].mean_log_likelihood, own_wrong.mean_log_likelihood);
+  EXPECT_GT(frame[1].mean_log_likelihood, frame[0].mean_log_likelihood + 0.5);
 }
 
 class FeatureIndexExact : public ::testing::TestWithParam<const char*> {};
