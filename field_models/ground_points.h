@@ -19,6 +19,12 @@ struct GroundPoint {
   Eigen::Matrix2d tilt_jacobian = Eigen::Matrix2d::Zero();
 };
 
+/// The point's tilt Jacobian where it is finite, else zero: a point whose Jacobian is broken
+/// tells nothing about the tilt, but still counts as a point.
+inline Eigen::Matrix2d usableTiltJacobian(const GroundPoint& point) {
+  return point.tilt_jacobian.allFinite() ? point.tilt_jacobian : Eigen::Matrix2d::Zero();
+}
+
 /// A closed polygon on the ground in the robot frame (m), vertices in order.
 using GroundPolygon = std::vector<Eigen::Vector2d>;
 

@@ -23,7 +23,7 @@ double posteriorScore(const GaussianPose& prior, const PointUpdateResult& result
 std::vector<GroundPoint> pointsWithTilt(const std::vector<GroundPoint>& points,
                                         const Eigen::Vector2d& tilt) {
   std::vector<GroundPoint> moved = points;
-  for (GroundPoint& p : moved) p.p_robot += p.tilt_jacobian * tilt;
+  for (GroundPoint& p : moved) p.p_robot += usableTiltJacobian(p) * tilt;
   return moved;
 }
 

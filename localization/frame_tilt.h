@@ -26,7 +26,7 @@ std::vector<PointUpdateResult> updateWithOneFrameTilt(const std::vector<Gaussian
                                                       double likelihood_points);
 
 /// The points as a camera whose (roll, pitch) is `tilt` (rad) off its recorded pose sees them:
-/// each moved by its GroundPoint::tilt_jacobian (first order).
+/// each moved by its GroundPoint::tilt_jacobian (first order; not where it is not finite).
 std::vector<GroundPoint> pointsWithTilt(const std::vector<GroundPoint>& points,
                                         const Eigen::Vector2d& tilt);
 

@@ -89,7 +89,7 @@ Accumulated<N> accumulate(const Pose2& pose, const Eigen::Vector2d& tilt,
     if (!gp.p_robot.allFinite() || !(gp.weight > 0.0) || !std::isfinite(gp.weight)) continue;
     ++acc.processed;
     Eigen::Vector2d q = gp.p_robot;
-    if constexpr (N == kPoseAndTilt) q += gp.tilt_jacobian * tilt;
+    if constexpr (N == kPoseAndTilt) q += usableTiltJacobian(gp) * tilt;
     const Eigen::Vector2d arm = rotation * q;
     const Eigen::Vector2d p = arm + Eigen::Vector2d(pose.x, pose.y);
     Association a;
@@ -106,7 +106,7 @@ Accumulated<N> accumulate(const Pose2& pose, const Eigen::Vector2d& tilt,
     j.template head<2>() = a.normal;
     j(2) = -a.normal.x() * arm.y() + a.normal.y() * arm.x();
     if constexpr (N == kPoseAndTilt) {
-      j.template tail<2>() = (rotation * gp.tilt_jacobian).transpose() * a.normal;
+      j.template tail<2>() = (rotation * usableTiltJacobian(gp)).transpose() * a.normal;
     }
     const double innovation_var = j.dot(gate_cov * j) + var;
     const double r2 = a.residual_m * a.residual_m;
@@ -211,10 +211,11 @@ PointUpdateResult updateWithGroundPoints(const GaussianPose& prior,
   // the tilt adds freedom that noise would use too.
   PointUpdateResult rigid = fitPose<kPose>(prior, points, index, cfg, Eigen::Vector2d::Zero());
   if (tilt_sigma.isZero() || !(rigid.mean_log_likelihood < -cfg.tilt_min_gain)) return rigid;
-  // Points that do not say how a tilt moves them (tilt_jacobian zero: not from a camera model)
-  // cannot show one.
-  const bool tilt_observable = std::any_of(
-      points.begin(), points.end(), [](const GroundPoint& p) { return !p.tilt_jacobian.isZero(); });
+  // Points that do not say how a tilt moves them (tilt_jacobian zero: not from a camera model;
+  // or not finite) cannot show one.
+  const bool tilt_observable = std::any_of(points.begin(), points.end(), [](const GroundPoint& p) {
+    return !usableTiltJacobian(p).isZero();
+  });
   if (!tilt_observable) return rigid;
   PointUpdateResult tilted = fitPose<kPoseAndTilt>(prior, points, index, cfg, tilt_sigma);
   return tilted.mean_log_likelihood >= rigid.mean_log_likelihood + cfg.tilt_min_gain ? tilted

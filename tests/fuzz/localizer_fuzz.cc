@@ -88,6 +88,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       GroundPoint p;
       p.p_robot = Eigen::Vector2d(in.smallDouble(8.0), in.smallDouble(8.0));
       if (op & 4) p.weight = in.smallDouble(2.0);
+      // How a camera tilt moves the point, m/rad (a far point 0.5 m below the camera: ~50).
+      if (op & 32) {
+        for (int k = 0; k < 4; ++k) p.tilt_jacobian(k / 2, k % 2) = in.smallDouble(60.0);
+      }
       points.points.push_back(p);
     }
     if (op & 8) {

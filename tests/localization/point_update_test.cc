@@ -302,6 +302,35 @@ TEST(FrameTilt, AWrongPlaceGetsNoTiltThatTheTruthDoesNotNeed) {
   EXPECT_GT(frame[1].mean_log_likelihood, frame[0].mean_log_likelihood + 0.5);
 }
 
+// Points from another team's vision may carry a broken Jacobian: they still count as points,
+// but say nothing about the tilt, and nothing turns NaN.
+TEST(FrameTilt, NonFiniteTiltJacobiansAreIgnored) {
+  const FieldModel field = makeStandardField("spl");
+  const FeatureIndex index(field);
+  const Pose2 truth(-2.0, -1.0, M_PI);
+  std::vector<GroundPoint> points = tiltedView(field, truth, 2.0 * M_PI / 180.0);
+  for (size_t i = 0; i < points.size(); i += 3) {
+    points[i].tilt_jacobian(i % 2, 1) = i % 2 ? std::nan("") : INFINITY;
+  }
+  PointUpdateConfig config;
+  config.pitch_sigma_rad = 2.0 * M_PI / 180.0;
+  const std::vector<PointUpdateResult> frame = updateWithOneFrameTilt(
+      {hypothesisAt(truth, 0.7), hypothesisAt(Pose2(-2.2, -0.85, M_PI), 0.3)}, points, index,
+      config, 8.0);
+  for (const PointUpdateResult& r : frame) {
+    EXPECT_TRUE(r.posterior.isFinite());
+    EXPECT_TRUE(r.tilt.allFinite());
+    EXPECT_TRUE(std::isfinite(r.mean_log_likelihood));
+    EXPECT_EQ(r.num_points, static_cast<int>(points.size()));
+  }
+  // The other two thirds still show the tilt.
+  EXPECT_NEAR(frame[0].tilt.y(), -2.0 * M_PI / 180.0, 0.5 * M_PI / 180.0);
+  EXPECT_LT((frame[0].posterior.mean.translation() - truth.translation()).norm(), 0.02);
+  for (const GroundPoint& p : pointsWithTilt(points, frame[0].tilt)) {
+    EXPECT_TRUE(p.p_robot.allFinite());
+  }
+}
+
 class FeatureIndexExact : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(FeatureIndexExact, MatchesBruteForceNearestFeature) {
