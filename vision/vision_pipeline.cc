@@ -77,21 +77,22 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
 
   // 3-4. The field boundary, then line spots on a distance-adapted scan grid below it.
   findSpots(image, start_rows, &result);
-  // Beyond the recorded pose: a frame whose candidates were all too wide for it is scanned again
-  // with the camera pitch their widths ask for (width_pitch.h); from here on the frame is
-  // processed as if recorded with that pitch.
-  if (result.spots.empty()) {
-    const std::optional<double> offset = fitPitchToWidths(camera_, diag.spot_stats.too_wide_runs,
-                                                          config_.spots, config_.width_pitch);
-    if (offset) {
-      recorded.pitch += *offset;
-      pose = corrector_->corrected(recorded);
-      usePose(pose, &result);
-      start_rows = scanStartRows(camera_, config_.horizon);
-      diag.spot_stats = LineSpotStats{};  // the second scan's
-      findSpots(image, start_rows, &result);
-      diag.width_pitch_rad = *offset;
-    }
+  // Beyond the recorded pose: a frame without spots whose image says its pitch is off is scanned
+  // again as if recorded with the pitch the image asks for; from here on the frame is processed
+  // with that pitch. A rescan can leave the frame without spots but with new evidence (the
+  // field's top lifted to the horizon gives candidates whose widths tell the pitch), hence more
+  // than one.
+  constexpr int kMaxPitchRescans = 3;
+  for (int rescan = 0; rescan < kMaxPitchRescans && result.spots.empty(); ++rescan) {
+    const std::optional<double> offset = pitchTheImageAsksFor(image, &result);
+    if (!offset) break;
+    recorded.pitch += *offset;
+    pose = corrector_->corrected(recorded);
+    usePose(pose, &result);
+    start_rows = scanStartRows(camera_, config_.horizon);
+    diag.spot_stats = LineSpotStats{};  // the new scan's
+    findSpots(image, start_rows, &result);
+    diag.image_pitch_rad += *offset;
   }
   diag.num_spots = static_cast<int>(result.spots.size());
   diag.time_spots_ms = msSince(&step);
@@ -143,6 +144,21 @@ void VisionPipeline::usePose(const Pose3& pose, VisionResult* result) {
   if (!samePose(pose, camera_.pose())) camera_.setPose(pose);
   result->robot_T_camera_used = pose;
   result->horizon_rows = camera_.horizonRows();
+}
+
+std::optional<double> VisionPipeline::pitchTheImageAsksFor(const cv::Mat& image,
+                                                           VisionResult* result) const {
+  VisionDiagnostics& diag = result->diagnostics;
+  // The widths of candidates too wide for the pose tell the pitch most precisely; without them,
+  // the field seen above the computed horizon bounds it from below.
+  const std::optional<double> from_widths =
+      fitPitchToWidths(camera_, diag.spot_stats.too_wide_runs, config_.spots, config_.width_pitch);
+  if (from_widths) return from_widths;
+  const std::optional<double> from_field =
+      pitchToSeeFieldTop(image, diag.field_color, camera_, scanStartRows(camera_, config_.horizon),
+                         config_.field_top_pitch);
+  if (from_field) ++diag.field_top_rescans;
+  return from_field;
 }
 
 void VisionPipeline::findSpots(const cv::Mat& image, const std::vector<int>& start_rows,

@@ -39,19 +39,9 @@ std::map<std::string, RealFolderSummary> RealFramesTest::summaries_;
 
 TEST_F(RealFramesTest, FramesShowingLinesGivePoints) {
   REQUIRE_REAL_DATA();
-  // Frames left without points, with the stage that rejects them. Not yet supported: nominal
-  // poses whose horizon lies below the lines (scanning above the computed horizon is not
-  // built), grey carpets (the field model is green to teal turf).
+  // Frames left without points (at most 7), with the stage that rejects them. Not yet
+  // supported: grey carpets (the field model is green to teal turf).
   const std::set<std::string> unsupported = {
-      // no candidate above the contrast threshold (lines above the nominal horizon)
-      "htwk_nao/images/ChinaTest2015GAB03B_AnyBallTest3_00051659_U.png",
-      "scarrix_nao_upper/images/danu_gaolie_shots_on_goal_1462_upper.png",
-      // the only candidates left do not go on beside them; the lines lie above the nominal
-      // horizon (before the continuation test its one point was a speck of turf)
-      "htwk_nao/images/ChinaTest2015GAB03B_AnyBallTest3_00049806_U.png",
-      // candidates too wide, and no pitch makes 70 % of them a line's width (width_pitch.h):
-      // the lines lie above the nominal horizon, the candidates are the robot's legs
-      "scarrix_nao_upper/images/eliza_striker_1843_upper.png",
       // no field colour (grey carpet)
       "scarrix_nao_unknown/images/oisin_compete0138.png",
       "scarrix_nao_unknown/images/oisin_compete0158.png",
@@ -59,11 +49,10 @@ TEST_F(RealFramesTest, FramesShowingLinesGivePoints) {
       "scarrix_nao_unknown/images/oisin_compete0276.png",
       // candidates not turf-bounded (before the continuation test its one point lay on a foot)
       "scarrix_nao_lower_320x240/images/lower_936261.jpg",
-      "scarrix_nao_unknown/images/pip_fp_ball0072.png",
-      "scarrix_nao_unknown/images/pip_fp_ball0183.png",
       "bitbots_kid_640x360/images/frame1563.jpg",
       "msl_robocup_ml/images/20220715_r7_cam3_20220715_172417.jpg",
   };
+  ASSERT_LE(unsupported.size(), 7u);
   int yes = 0, empty = 0;
   for (const auto& [folder, s] : summaries_) {
     yes += s.yes;
@@ -80,9 +69,21 @@ TEST_F(RealFramesTest, FramesShowingLinesGivePoints) {
 
 TEST_F(RealFramesTest, FramesShowingNoLineGiveFewPoints) {
   REQUIRE_REAL_DATA();
-  long points = 0;
-  for (const auto& [folder, s] : summaries_) points += s.houghloc.no_points;
-  std::printf("points on the 33 no-line frames: %ld\n", points);
+  // Labelled "no" in index.csv but showing lines: the goal line and the goal area's line run
+  // under the goal at the top left (the first scan's horizon is below them; the field seen above
+  // it gives the pitch, field_top_pitch.h). Every point of it lies on them (overlay checked).
+  const std::set<std::string> showing_lines = {"scarrix_nao_unknown/images/max_japan0127.png"};
+  long points = 0, on_unlabelled_lines = 0;
+  for (const auto& [folder, s] : summaries_) {
+    for (const auto& [image, n] : s.no_images_with_points) {
+      const bool lines = showing_lines.count(folder + "/" + image) > 0;
+      (lines ? on_unlabelled_lines : points) += n;
+      std::printf("no-line frame with points: %s/%s: %d%s\n", folder.c_str(), image.c_str(), n,
+                  lines ? " (shows lines)" : "");
+    }
+  }
+  std::printf("points on the 33 no-line frames: %ld, %ld more on lines the index misses\n", points,
+              on_unlabelled_lines);
   // The target is 10; 22 of these lie on the white ball and robots' feet of scarrix_nao_lower
   // (bottom camera, 0.2-0.6 m ahead). Bound at the measured figure (45 before the continuation
   // test).

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <opencv2/imgproc.hpp>
 #include <ostream>
@@ -203,6 +204,45 @@ TEST(VisionPipeline, DegenerateImagesGiveFewPoints) {
   const VisionResult sky = pipeline.process(view.image, up);
   EXPECT_EQ(sky.ground.size(), 0u);
   EXPECT_TRUE(sky.ground.visible_regions.empty());
+}
+
+TEST(VisionPipeline, LinesAboveTheRecordedHorizonAreFoundWithThePitchTheFieldAsksFor) {
+  // The image of a camera pitched 20.6 deg down, recorded as looking straight ahead (a nominal
+  // pose on a robot whose head is pitched): every line lies above the recorded horizon, so the
+  // first scan sees turf only. The field's top seen above that horizon bounds the pitch: the
+  // frame is scanned again with the horizon just above the far border, and the lines give points.
+  testing::SyntheticStyle style;
+  style.noise_sigma = 3.0;
+  const TestView& view = testing::testView("nao-top", "spl", Pose2(1.0, 0.0, 0.0), style);
+  Pose3 recorded = view.preset.robot_T_camera;
+  const double error_rad = recorded.pitch;
+  recorded.pitch = 0.0;
+  VisionPipeline pipeline(view.preset.intrinsics, configFor(view));
+  const VisionResult result = pipeline.process(view.image, recorded);
+  const VisionDiagnostics& diag = result.diagnostics;
+  EXPECT_EQ(diag.field_top_rescans, 1);
+  // A bound, not the pitch: the carpet's far edge (4.14 m ahead of the camera) lies 6.9 deg below
+  // the horizon, where the stage assumes border_depression_rad (2.9 deg).
+  const double border_depression = std::atan2(recorded.z, view.field.outerHalfLength() - 1.06);
+  const double bound =
+      error_rad - border_depression + pipeline.config().field_top_pitch.border_depression_rad;
+  std::printf("pitch asked for %.1f deg (error %.1f deg, bound %.1f deg), %zu points\n",
+              diag.image_pitch_rad * 180 / M_PI, error_rad * 180 / M_PI, bound * 180 / M_PI,
+              result.ground.size());
+  EXPECT_NEAR(diag.image_pitch_rad, bound, 1.0 * M_PI / 180);
+  EXPECT_GE(result.ground.size(), 20u);
+  // The points, projected with that pitch, lie on the lines up to its remaining error: a few
+  // degrees less pitch puts them 10-40 % too far.
+  const PointScore score = testing::scorePoints(view, groundOf(result), 0.5);
+  std::printf("within 0.5 m of a line: %.2f, median distance %.3f m\n", score.precision,
+              score.median_error_m);
+  EXPECT_GE(score.precision, 0.9);
+  EXPECT_LE(score.median_error_m, 0.45);
+  // Without the field's top the frame stays empty: the first scan has no candidate to fit.
+  VisionConfig without = configFor(view);
+  without.field_top_pitch.enabled = false;
+  VisionPipeline plain(view.preset.intrinsics, without);
+  EXPECT_TRUE(plain.process(view.image, recorded).ground.points.empty());
 }
 
 TEST(VisionPipeline, BadInputThrowsAClearError) {

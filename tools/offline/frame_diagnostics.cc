@@ -12,11 +12,12 @@ FrameDiagnostics::FrameDiagnostics(const std::string& spots_csv)
 void FrameDiagnostics::add(const FrameRecord& frame, const CameraIntrinsics& intrinsics,
                            const VisionResult& result, const GroundProjectionConfig& projection) {
   ++counts_[static_cast<size_t>(classifyFrame(result))];
-  if (const double offset = result.diagnostics.width_pitch_rad; offset != 0.0) {
+  if (const double offset = result.diagnostics.image_pitch_rad; offset != 0.0) {
     const double deg = offset * 180.0 / M_PI;
-    width_pitch_min_deg_ = width_pitch_frames_ == 0 ? deg : std::min(width_pitch_min_deg_, deg);
-    width_pitch_max_deg_ = width_pitch_frames_ == 0 ? deg : std::max(width_pitch_max_deg_, deg);
-    ++width_pitch_frames_;
+    image_pitch_min_deg_ = image_pitch_frames_ == 0 ? deg : std::min(image_pitch_min_deg_, deg);
+    image_pitch_max_deg_ = image_pitch_frames_ == 0 ? deg : std::max(image_pitch_max_deg_, deg);
+    ++image_pitch_frames_;
+    if (result.diagnostics.field_top_rescans > 0) ++field_top_frames_;
   }
   const CameraModel camera(intrinsics, result.robot_T_camera_used);
   const std::vector<SpotRay> rays = spotRays(camera, result.spots);
@@ -43,11 +44,11 @@ void FrameDiagnostics::print() const {
     separator = ",";
   }
   std::printf("\n");
-  if (width_pitch_frames_ > 0) {
+  if (image_pitch_frames_ > 0) {
     std::printf(
-        "  frames scanned again with the camera pitch their too-wide candidates ask for: %d "
-        "(offset %+.1f to %+.1f deg; the recorded pose may be off)\n",
-        width_pitch_frames_, width_pitch_min_deg_, width_pitch_max_deg_);
+        "  frames scanned again with the camera pitch the image asks for: %d, %d of them for "
+        "field above the horizon (offset %+.1f to %+.1f deg; the recorded pose may be off)\n",
+        image_pitch_frames_, field_top_frames_, image_pitch_min_deg_, image_pitch_max_deg_);
   }
 }
 

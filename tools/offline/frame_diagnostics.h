@@ -20,15 +20,16 @@ class FrameDiagnostics {
   void add(const FrameRecord& frame, const CameraIntrinsics& intrinsics, const VisionResult& result,
            const GroundProjectionConfig& projection);
   void close() { spots_.close(); }
-  /// "frames without points: ..." with one count per reason, and the frames whose pitch was
-  /// fitted to their candidates' widths (width_pitch.h).
+  /// "frames without points: ..." with one count per reason, and the frames scanned again with
+  /// the pitch their image asked for (width_pitch.h, field_top_pitch.h).
   void print() const;
 
  private:
   CsvWriter spots_;
   std::array<int, kNumFrameRejections> counts_{};
-  int width_pitch_frames_ = 0;  ///< frames scanned again with a pitch fitted to line widths
-  double width_pitch_min_deg_ = 0.0, width_pitch_max_deg_ = 0.0;
+  int image_pitch_frames_ = 0;  ///< frames scanned again with the pitch the image asked for
+  int field_top_frames_ = 0;    ///< ... among them for field seen above the horizon
+  double image_pitch_min_deg_ = 0.0, image_pitch_max_deg_ = 0.0;
 };
 
 }  // namespace houghloc

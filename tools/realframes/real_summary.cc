@@ -40,6 +40,8 @@ RealFolderSummary summarizeRealFolder(const std::string& data_dir, const std::st
                     c.radius, c.field_share, c.texture_sigma);
       s.yes_empty_images.push_back(o.label.image + ": " + frameRejectionName(o.rejection) + colour);
     }
+    if (lines == "no" && o.points > 0)
+      s.no_images_with_points.emplace_back(o.label.image, o.points);
     if (!o.label.has_mask) continue;
     const fs::path mask =
         fs::path(data_dir) / folder / "labels" / (fs::path(o.label.image).stem().string() + ".png");

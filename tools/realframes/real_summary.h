@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tools/realframes/mask_metrics.h"
@@ -21,7 +22,8 @@ struct RealFolderSummary {
   std::string folder;
   int frames = 0, yes = 0, faint = 0, no = 0;
   DetectorCounts houghloc, baseline;
-  std::vector<std::string> yes_empty_images;       ///< houghloc's, with the rejection reason
+  std::vector<std::string> yes_empty_images;  ///< houghloc's, with the rejection reason
+  std::vector<std::pair<std::string, int>> no_images_with_points;  ///< houghloc's, with the count
   std::optional<MaskMetrics> mask, baseline_mask;  ///< masked images only (one per folder)
 };
 
