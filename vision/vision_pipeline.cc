@@ -77,22 +77,26 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
 
   // 3-4. The field boundary, then line spots on a distance-adapted scan grid below it.
   findSpots(image, start_rows, &result);
-  // Beyond the recorded pose: a frame without spots whose image says its pitch is off is scanned
-  // again as if recorded with the pitch the image asks for; from here on the frame is processed
-  // with that pitch. A rescan can leave the frame without spots but with new evidence (the
-  // field's top lifted to the horizon gives candidates whose widths tell the pitch), hence more
-  // than one.
+  // Beyond the recorded pose: a frame without spots is scanned again as if recorded with the
+  // pitch its image asks for: that of its too-wide candidates' widths (width_pitch.h), else
+  // that of its turf seen above the computed horizon, which means the camera looks further
+  // down than the pose says (field_top_pitch.h). Such a rescan can leave the frame without
+  // spots but with candidates whose widths tell the pitch, hence more than one.
   constexpr int kMaxPitchRescans = 3;
   for (int rescan = 0; rescan < kMaxPitchRescans && result.spots.empty(); ++rescan) {
-    const std::optional<double> offset = pitchTheImageAsksFor(image, &result);
+    std::optional<double> offset = fitPitchToWidths(camera_, diag.spot_stats.too_wide_runs,
+                                                    config_.spots, config_.width_pitch);
+    double* applied = &diag.width_pitch_rad;
+    if (!offset) {
+      offset =
+          pitchToSeeFieldTop(image, diag.field_color, camera_, start_rows, config_.field_top_pitch);
+      applied = &diag.field_top_pitch_rad;
+    }
     if (!offset) break;
-    recorded.pitch += *offset;
-    pose = corrector_->corrected(recorded);
-    usePose(pose, &result);
-    start_rows = scanStartRows(camera_, config_.horizon);
+    addPitch(*offset, &recorded, &pose, &start_rows, &result);
     diag.spot_stats = LineSpotStats{};  // the new scan's
     findSpots(image, start_rows, &result);
-    diag.image_pitch_rad += *offset;
+    *applied += *offset;
   }
   diag.num_spots = static_cast<int>(result.spots.size());
   diag.time_spots_ms = msSince(&step);
@@ -105,8 +109,14 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
       spotRays(camera_, result.spots), pose, config_.own_body, &diag.dropped_on_own_body);
   diag.time_project_ms = msSince(&step);
   result.features = fitLineFeatures(all_rays, pose, config_.projection, config_.segments);
-  diag.pose_correction_updated = corrector_->update(
-      result.features.segments, result.features.circles, recorded, {&all_rays, field_T_robot});
+  // A frame processed with a pitch its image asked for does not teach the corrector: it
+  // estimates the recorded poses' error, and would learn that of the image's rough pitch instead
+  // (and pass it on to frames that need none).
+  const bool recorded_pitch = diag.field_top_pitch_rad == 0.0 && diag.width_pitch_rad == 0.0;
+  if (recorded_pitch) {
+    diag.pose_correction_updated = corrector_->update(
+        result.features.segments, result.features.circles, recorded, {&all_rays, field_T_robot});
+  }
   const Pose3 refined = corrector_->corrected(recorded);
   if (!samePose(refined, pose)) {
     result.robot_T_camera_used = refined;
@@ -146,19 +156,12 @@ void VisionPipeline::usePose(const Pose3& pose, VisionResult* result) {
   result->horizon_rows = camera_.horizonRows();
 }
 
-std::optional<double> VisionPipeline::pitchTheImageAsksFor(const cv::Mat& image,
-                                                           VisionResult* result) const {
-  VisionDiagnostics& diag = result->diagnostics;
-  // The widths of candidates too wide for the pose tell the pitch most precisely; without them,
-  // the field seen above the computed horizon bounds it from below.
-  const std::optional<double> from_widths =
-      fitPitchToWidths(camera_, diag.spot_stats.too_wide_runs, config_.spots, config_.width_pitch);
-  if (from_widths) return from_widths;
-  const std::optional<double> from_field =
-      pitchToSeeFieldTop(image, diag.field_color, camera_, scanStartRows(camera_, config_.horizon),
-                         config_.field_top_pitch);
-  if (from_field) ++diag.field_top_rescans;
-  return from_field;
+void VisionPipeline::addPitch(double offset, Pose3* recorded, Pose3* pose,
+                              std::vector<int>* start_rows, VisionResult* result) {
+  recorded->pitch += offset;
+  *pose = corrector_->corrected(*recorded);
+  usePose(*pose, result);
+  *start_rows = scanStartRows(camera_, config_.horizon);
 }
 
 void VisionPipeline::findSpots(const cv::Mat& image, const std::vector<int>& start_rows,

@@ -41,7 +41,7 @@ struct VisionConfig {
   LineSegmentConfig segments;
   CameraPoseCorrectionConfig pose_correction;
   WidthPitchConfig width_pitch;  ///< a frame whose candidates are all too wide: fit the pitch
-  FieldTopPitchConfig field_top_pitch;  ///< a frame whose field reaches above the horizon: pitch
+  FieldTopPitchConfig field_top_pitch;  ///< a frame whose turf reaches above the horizon: pitch
 };
 
 /// Per-step times and counts of one frame, for tuning and the offline summary.
@@ -60,11 +60,11 @@ struct VisionDiagnostics {
   Eigen::Vector2d pose_correction_sigma_rad =
       Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
   int pose_correction_map_inliers = 0;  ///< this frame's points matched to the map (0: none)
-  /// Pitch offset (rad) the image asked for and that was added to this frame's recorded pose
-  /// before a new scan (VisionPipeline::process: width_pitch.h, field_top_pitch.h); 0 when the
-  /// first scan found spots or the image said nothing about the pitch.
-  double image_pitch_rad = 0.0;
-  int field_top_rescans = 0;  ///< of those rescans, the ones from the field seen above the horizon
+  /// Pitch offsets (rad) the image of a frame without spots asked for, added to its recorded
+  /// pose before a new scan (0: none): the widths of its too-wide candidates (width_pitch.h),
+  /// and its turf seen above the computed horizon (field_top_pitch.h).
+  double width_pitch_rad = 0.0;
+  double field_top_pitch_rad = 0.0;
   double time_total_ms = 0.0;
   double time_color_ms = 0.0;     ///< horizon, field colour, boundary
   double time_spots_ms = 0.0;     ///< width model, scan grid, spot detection
@@ -121,10 +121,10 @@ class VisionPipeline {
   /// Points camera_ at `pose` (the corrected recorded pose) and writes it and the horizon into
   /// `result`.
   void usePose(const Pose3& pose, VisionResult* result);
-  /// The pitch offset (rad) under which the image of a frame without spots would fit camera_'s
-  /// pose better: from the too-wide candidates' widths, else from the field seen above the
-  /// horizon (counted in the diagnostics); none when the image says nothing about the pitch.
-  std::optional<double> pitchTheImageAsksFor(const cv::Mat& image, VisionResult* result) const;
+  /// Adds `offset` (rad) to the recorded pose's pitch and points camera_, the pose and the scan
+  /// start rows at it.
+  void addPitch(double offset, Pose3* recorded, Pose3* pose, std::vector<int>* start_rows,
+                VisionResult* result);
   /// Steps 3-4 with camera_'s pose and the frame's field colour: the field boundary below
   /// `start_rows`, the width model, the scan grid and the line spots, into `result`.
   void findSpots(const cv::Mat& image, const std::vector<int>& start_rows,

@@ -12,13 +12,8 @@ FrameDiagnostics::FrameDiagnostics(const std::string& spots_csv)
 void FrameDiagnostics::add(const FrameRecord& frame, const CameraIntrinsics& intrinsics,
                            const VisionResult& result, const GroundProjectionConfig& projection) {
   ++counts_[static_cast<size_t>(classifyFrame(result))];
-  if (const double offset = result.diagnostics.image_pitch_rad; offset != 0.0) {
-    const double deg = offset * 180.0 / M_PI;
-    image_pitch_min_deg_ = image_pitch_frames_ == 0 ? deg : std::min(image_pitch_min_deg_, deg);
-    image_pitch_max_deg_ = image_pitch_frames_ == 0 ? deg : std::max(image_pitch_max_deg_, deg);
-    ++image_pitch_frames_;
-    if (result.diagnostics.field_top_rescans > 0) ++field_top_frames_;
-  }
+  width_pitch_.add(result.diagnostics.width_pitch_rad);
+  field_top_pitch_.add(result.diagnostics.field_top_pitch_rad);
   const CameraModel camera(intrinsics, result.robot_T_camera_used);
   const std::vector<SpotRay> rays = spotRays(camera, result.spots);
   const GroundProjector projector(result.robot_T_camera_used);
@@ -30,6 +25,14 @@ void FrameDiagnostics::add(const FrameRecord& frame, const CameraIntrinsics& int
                      spots_.format(spot.pixel.y()), spots_.format(spot.width_px),
                      projected ? "yes" : "no"});
   }
+}
+
+void FrameDiagnostics::PitchOffsets::add(double offset_rad) {
+  if (offset_rad == 0.0) return;
+  const double deg = offset_rad * 180.0 / M_PI;
+  min_deg = frames == 0 ? deg : std::min(min_deg, deg);
+  max_deg = frames == 0 ? deg : std::max(max_deg, deg);
+  ++frames;
 }
 
 void FrameDiagnostics::print() const {
@@ -44,11 +47,17 @@ void FrameDiagnostics::print() const {
     separator = ",";
   }
   std::printf("\n");
-  if (image_pitch_frames_ > 0) {
+  if (field_top_pitch_.frames > 0) {
     std::printf(
-        "  frames scanned again with the camera pitch the image asks for: %d, %d of them for "
-        "field above the horizon (offset %+.1f to %+.1f deg; the recorded pose may be off)\n",
-        image_pitch_frames_, field_top_frames_, image_pitch_min_deg_, image_pitch_max_deg_);
+        "  frames scanned again with the camera pitched further down, as their turf seen above the "
+        "computed horizon asks: %d (offset %+.1f to %+.1f deg; the recorded pose may be off)\n",
+        field_top_pitch_.frames, field_top_pitch_.min_deg, field_top_pitch_.max_deg);
+  }
+  if (width_pitch_.frames > 0) {
+    std::printf(
+        "  frames scanned again with the camera pitch their too-wide candidates ask for: %d "
+        "(offset %+.1f to %+.1f deg; the recorded pose may be off)\n",
+        width_pitch_.frames, width_pitch_.min_deg, width_pitch_.max_deg);
   }
 }
 

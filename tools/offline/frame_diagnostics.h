@@ -20,16 +20,20 @@ class FrameDiagnostics {
   void add(const FrameRecord& frame, const CameraIntrinsics& intrinsics, const VisionResult& result,
            const GroundProjectionConfig& projection);
   void close() { spots_.close(); }
-  /// "frames without points: ..." with one count per reason, and the frames scanned again with
-  /// the pitch their image asked for (width_pitch.h, field_top_pitch.h).
+  /// "frames without points: ..." with one count per reason, and the frames processed with the
+  /// pitch their image asked for (field_top_pitch.h, width_pitch.h).
   void print() const;
 
  private:
   CsvWriter spots_;
   std::array<int, kNumFrameRejections> counts_{};
-  int image_pitch_frames_ = 0;  ///< frames scanned again with the pitch the image asked for
-  int field_top_frames_ = 0;    ///< ... among them for field seen above the horizon
-  double image_pitch_min_deg_ = 0.0, image_pitch_max_deg_ = 0.0;
+  /// Frames processed with a pitch offset the image asked for, and the offsets' range.
+  struct PitchOffsets {
+    int frames = 0;
+    double min_deg = 0.0, max_deg = 0.0;
+    void add(double offset_rad);  ///< 0: none
+  };
+  PitchOffsets field_top_pitch_, width_pitch_;
 };
 
 }  // namespace houghloc
