@@ -222,7 +222,8 @@ TEST(VisionPipeline, LinesAboveTheRecordedHorizonAreFoundWithThePitchTheFieldAsk
   const VisionDiagnostics& diag = result.diagnostics;
   // A bound, not the pitch: the carpet's far edge (4.14 m ahead of the camera) lies 6.9 deg below
   // the horizon, where the stage assumes border_depression_rad (2.9 deg).
-  const double border_depression = std::atan2(recorded.z, view.field.outerHalfLength() - 1.06);
+  const double camera_x = view.field_T_robot.x + recorded.x;
+  const double border_depression = std::atan2(recorded.z, view.field.outerHalfLength() - camera_x);
   const double bound =
       error_rad - border_depression + pipeline.config().field_top_pitch.border_depression_rad;
   std::printf("pitch asked for %.1f deg (error %.1f deg, bound %.1f deg), %zu points\n",
