@@ -75,18 +75,27 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   }
   diag.time_color_ms = msSince(&step);
 
-  // 3-4. The field boundary, then line spots on a distance-adapted scan grid below it.
+  // 3-4. The field boundary, then line spots on a distance-adapted scan grid below it; 5-6.
+  // the spots undistorted, and the segments and circles they form.
   findSpots(image, start_rows, &result);
-  // Beyond the recorded pose: a frame without spots is scanned again as if recorded with the
-  // pitch its image asks for: that of its too-wide candidates' widths (width_pitch.h), else
-  // that of its turf seen above the computed horizon, which means the camera looks further
-  // down than the pose says (field_top_pitch.h). Such a rescan can leave the frame without
-  // spots but with candidates whose widths tell the pitch, hence more than one.
+  diag.time_spots_ms = msSince(&step);
+  std::vector<SpotRay> all_rays = fitFeatures(pose, &result);
+  diag.time_features_ms = msSince(&step);
+  // Beyond the recorded pose: a frame whose spots form no line is scanned again as if recorded
+  // with the pitch its image asks for. On a frame without spots that of its too-wide
+  // candidates' widths (width_pitch.h); where other candidates fit the width model, too-wide
+  // ones are more likely feet, a ball or a robot close by. Else that of its turf seen above the
+  // computed horizon, which means the camera looks further down than the pose says
+  // (field_top_pitch.h). Such a rescan can leave the frame without spots but with candidates
+  // whose widths tell the pitch, hence more than one.
   constexpr int kMaxPitchRescans = 3;
-  for (int rescan = 0; rescan < kMaxPitchRescans && result.spots.empty(); ++rescan) {
-    std::optional<double> offset = fitPitchToWidths(camera_, diag.spot_stats.too_wide_runs,
-                                                    config_.spots, config_.width_pitch);
+  for (int rescan = 0; rescan < kMaxPitchRescans && !formsLines(result.features); ++rescan) {
+    std::optional<double> offset;
     double* applied = &diag.width_pitch_rad;
+    if (result.spots.empty()) {
+      offset = fitPitchToWidths(camera_, diag.spot_stats.too_wide_runs, config_.spots,
+                                config_.width_pitch);
+    }
     if (!offset) {
       offset =
           pitchToSeeFieldTop(image, diag.field_color, camera_, start_rows, config_.field_top_pitch);
@@ -96,19 +105,13 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
     addPitch(*offset, &recorded, &pose, &start_rows, &result);
     diag.spot_stats = LineSpotStats{};  // the new scan's
     findSpots(image, start_rows, &result);
+    all_rays = fitFeatures(pose, &result);
     *applied += *offset;
   }
   diag.num_spots = static_cast<int>(result.spots.size());
-  diag.time_spots_ms = msSince(&step);
+  diag.time_spots_ms += msSince(&step);  // the rescans
 
-  // 5. Undistort only the spots; 6. segments, circles and the pitch/roll correction, which
-  // then applies to this frame's projection already. The corrector sees all spots but those on
-  // the robot's own feet: the goal frame's bars dropped below are parallel or perpendicular to
-  // the lines anyway, and with a wrong tilt the boundary gap would be measured wrongly.
-  const std::vector<SpotRay> all_rays = dropSpotsOnOwnBody(
-      spotRays(camera_, result.spots), pose, config_.own_body, &diag.dropped_on_own_body);
-  diag.time_project_ms = msSince(&step);
-  result.features = fitLineFeatures(all_rays, pose, config_.projection, config_.segments);
+  // 6. The pitch/roll correction, which then applies to this frame's projection already.
   // A frame processed with a pitch its image asked for does not teach the corrector: it
   // estimates the recorded poses' error, and would learn that of the image's rough pitch instead
   // (and pass it on to frames that need none).
@@ -137,7 +140,7 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   diag.pose_correction_estimate_rad = corrector_->estimate();
   diag.pose_correction_sigma_rad = corrector_->estimateSigma();
   diag.pose_correction_map_inliers = corrector_->lastMapInliers();
-  diag.time_features_ms = msSince(&step);
+  diag.time_features_ms += msSince(&step);
 
   result.ground.points = projectSpots(rays, result.robot_T_camera_used, camera_id_,
                                       config_.projection, &diag.projection_stats);
@@ -162,6 +165,21 @@ void VisionPipeline::addPitch(double offset, Pose3* recorded, Pose3* pose,
   *pose = corrector_->corrected(*recorded);
   usePose(*pose, result);
   *start_rows = scanStartRows(camera_, config_.horizon);
+}
+
+std::vector<SpotRay> VisionPipeline::fitFeatures(const Pose3& pose, VisionResult* result) const {
+  // The corrector sees all spots but those on the robot's own feet: the goal frame's bars
+  // dropped below are parallel or perpendicular to the lines anyway, and with a wrong tilt the
+  // boundary gap would be measured wrongly.
+  std::vector<SpotRay> rays =
+      dropSpotsOnOwnBody(spotRays(camera_, result->spots), pose, config_.own_body,
+                         &result->diagnostics.dropped_on_own_body);
+  result->features = fitLineFeatures(rays, pose, config_.projection, config_.segments);
+  return rays;
+}
+
+bool VisionPipeline::formsLines(const LineFeatures& features) {
+  return !features.segments.empty() || !features.circles.empty();
 }
 
 void VisionPipeline::findSpots(const cv::Mat& image, const std::vector<int>& start_rows,

@@ -67,9 +67,9 @@ struct VisionDiagnostics {
   double field_top_pitch_rad = 0.0;
   double time_total_ms = 0.0;
   double time_color_ms = 0.0;     ///< horizon, field colour, boundary
-  double time_spots_ms = 0.0;     ///< width model, scan grid, spot detection
-  double time_project_ms = 0.0;   ///< rays, projection, visible region
-  double time_features_ms = 0.0;  ///< segments, circles, pose correction
+  double time_spots_ms = 0.0;     ///< width model, scan grid, spot detection, pitch rescans
+  double time_project_ms = 0.0;   ///< projection, visible region
+  double time_features_ms = 0.0;  ///< rays, segments, circles, pose correction
 };
 
 struct VisionResult {
@@ -125,6 +125,12 @@ class VisionPipeline {
   /// start rows at it.
   void addPitch(double offset, Pose3* recorded, Pose3* pose, std::vector<int>* start_rows,
                 VisionResult* result);
+  /// Steps 5-6 on result's spots with camera_'s pose (`pose`): their undistorted rays but those
+  /// on the robot's own body (returned), and the segments and circles they form (into result).
+  std::vector<SpotRay> fitFeatures(const Pose3& pose, VisionResult* result) const;
+  /// Whether a frame shows line evidence: a segment or a centre-circle arc. Specks of turf, a
+  /// ball or a robot's parts give spots but rarely four in a straight line on the ground.
+  static bool formsLines(const LineFeatures& features);
   /// Steps 3-4 with camera_'s pose and the frame's field colour: the field boundary below
   /// `start_rows`, the width model, the scan grid and the line spots, into `result`.
   void findSpots(const cv::Mat& image, const std::vector<int>& start_rows,

@@ -94,6 +94,9 @@ TEST_F(RealFramesTest, MaskedImages) {
   REQUIRE_REAL_DATA();
   const std::map<std::string, std::pair<double, double>> floors = {
       // folder: (precision, recall) floors
+      // its centre circle and halfway line lie above the nominal horizon; the first scan finds
+      // specks of turf only, the field top rescan (step 4e) the lines
+      {"bitbots_nao_upper", {0.9, 0.1}},
       {"bitbots_kid_620x480", {0.3, 0.6}},
       {"torso21_kid_800x600", {0.6, 0.3}},
       // hard sunlight: 1 of its 12 points lies on a line
