@@ -11,6 +11,7 @@
 #include <string>
 
 #include "vision/image_conversion.h"
+#include "vision/line_width_model.h"
 #include "vision_test_views.h"
 
 namespace houghloc {
@@ -243,6 +244,47 @@ TEST(VisionPipeline, LinesAboveTheRecordedHorizonAreFoundWithThePitchTheFieldAsk
   without.field_top_pitch.enabled = false;
   VisionPipeline plain(view.preset.intrinsics, without);
   EXPECT_TRUE(plain.process(view.image, recorded).ground.points.empty());
+}
+
+TEST(VisionPipeline, SpecksBelowTheRecordedHorizonDoNotHideTheLinesAboveIt) {
+  // The frame of the test above with three white specks painted on the turf below the
+  // recorded horizon, each a line's width tall for that pose and three widths long: the first
+  // scan finds spots on them but no line (no segment, no arc), which is what a frame whose
+  // horizon cuts below its lines shows when a ball, a robot's part or a bright tuft lies on the
+  // turf. Such a frame is scanned again like a frame without spots.
+  testing::SyntheticStyle style;
+  style.noise_sigma = 3.0;
+  const TestView& view = testing::testView("nao-top", "spl", Pose2(1.0, 0.0, 0.0), style);
+  Pose3 recorded = view.preset.robot_T_camera;
+  recorded.pitch = 0.0;
+  const CameraModel camera(view.preset.intrinsics, recorded);
+  const LineWidthModel widths(camera, view.field.line_width, configFor(view).line_width);
+  cv::Mat image = view.image.clone();
+  for (const cv::Point centre : {cv::Point(150, 420), cv::Point(330, 380), cv::Point(500, 440)}) {
+    const int tall = static_cast<int>(std::lround(widths.expectedPx(centre.x, centre.y).y()));
+    const cv::Point half(3 * tall / 2, tall / 2);
+    cv::rectangle(image, centre - half, centre + half, cv::Scalar(235, 235, 235), cv::FILLED);
+  }
+
+  VisionConfig without = configFor(view);
+  without.field_top_pitch.enabled = false;
+  VisionPipeline plain(view.preset.intrinsics, without);
+  const VisionResult first_scan = plain.process(image, recorded);
+  std::printf("without the field top: %zu points, %zu segments\n", first_scan.ground.size(),
+              first_scan.features.segments.size());
+  ASSERT_GE(first_scan.ground.size(), 3u);            // the specks give spots ...
+  ASSERT_TRUE(first_scan.features.segments.empty());  // ... but no line
+  ASSERT_TRUE(first_scan.features.circles.empty());
+
+  VisionPipeline pipeline(view.preset.intrinsics, configFor(view));
+  const VisionResult result = pipeline.process(image, recorded);
+  const PointScore score = testing::scorePoints(view, groundOf(result), 0.5);
+  std::printf("with it: pitch asked for %.1f deg, %zu points, within 0.5 m of a line %.2f\n",
+              result.diagnostics.field_top_pitch_rad * 180 / M_PI, result.ground.size(),
+              score.precision);
+  EXPECT_GT(result.diagnostics.field_top_pitch_rad, 10.0 * M_PI / 180);
+  EXPECT_GE(result.ground.size(), 20u);
+  EXPECT_GE(score.precision, 0.9);
 }
 
 TEST(VisionPipeline, BadInputThrowsAClearError) {
