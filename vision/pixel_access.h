@@ -62,12 +62,17 @@ class Bgr8Pixels {
   const cv::Mat& image_;
 };
 
-/// BGR bytes of one YUYV pixel with the fixed-point limited-range BT.601 arithmetic of OpenCV's
-/// COLOR_YUV2BGR_YUYV (20-bit coefficients, rounded, saturated), so a stage reading YUYV sees
-/// exactly the bytes it would read in yuyvToBgr's output.
+/// The fixed-point limited-range BT.601 coefficients of OpenCV's COLOR_YUV2BGR_YUYV (20
+/// fractional bits; rounded, saturated).
+namespace yuyv_fixed_point {
+constexpr int kShift = 20;
+constexpr int kCy = 1220542, kCub = 2116026, kCug = -409993, kCvg = -852492, kCvr = 1673527;
+}  // namespace yuyv_fixed_point
+
+/// BGR bytes of one YUYV pixel with OpenCV's arithmetic (yuyv_fixed_point), so a stage reading
+/// YUYV sees exactly the bytes it would read in yuyvToBgr's output.
 inline BgrBytes decodeYuyv(int y, int cb, int cr) {
-  constexpr int kShift = 20;
-  constexpr int kCy = 1220542, kCub = 2116026, kCug = -409993, kCvg = -852492, kCvr = 1673527;
+  using namespace yuyv_fixed_point;
   const int y_term = std::max(0, y - 16) * kCy + (1 << (kShift - 1));  // rounds the shift
   const int du = cb - 128, dv = cr - 128;
   const auto byte = [](int value) { return static_cast<uchar>(std::clamp(value, 0, 255)); };

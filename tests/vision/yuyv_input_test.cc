@@ -40,6 +40,19 @@ TEST(YuyvPixels, DecodesEveryYCbCrLikeOpenCv) {
     }
   }
   EXPECT_EQ(mismatches, 0) << "of " << yuyv.total() << " pixels";
+  // Column u holds every (Cb, Cr) with Y = u: the vectorised column decoding, all 2^24 too.
+  RunBuffer buffer;
+  long column_mismatches = 0;
+  for (int u = 0; u < yuyv.cols; ++u) {
+    const DecodedRun column = pixels.columnRun(u, 0, yuyv.rows, &buffer);
+    for (int v = 0; v < yuyv.rows; ++v) {
+      const uchar* expected = bgr.ptr<uchar>(v) + 3 * u;
+      const uchar* got = column.at(v);
+      column_mismatches += !sameBytes({got[0], got[1], got[2]}, expected) ||
+                           column.luma(v) != FieldColor::luma(expected);
+    }
+  }
+  EXPECT_EQ(column_mismatches, 0) << "of " << yuyv.total() << " pixels";
 }
 
 TEST(YuyvPixels, RunsHoldTheDecodedPixels) {
@@ -59,7 +72,7 @@ TEST(YuyvPixels, RunsHoldTheDecodedPixels) {
           << "row run from u " << start << ", pixel " << k;
       EXPECT_EQ(row.luma(k), FieldColor::luma(expected));
     }
-    const int column_n = 11;
+    const int column_n = 21;  // one 16-pixel block of the vectorised decoding and a tail
     const DecodedRun column = pixels.columnRun(start, 3, column_n, &buffer);
     for (int k = 0; k < column_n; ++k) {
       const uchar* expected = bgr.ptr<uchar>(3 + k) + 3 * start;
