@@ -82,31 +82,17 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   std::vector<SpotRay> all_rays = fitFeatures(pose, &result);
   diag.time_features_ms = msSince(&step);
   // Beyond the recorded pose: a frame whose spots form no line is scanned again as if recorded
-  // with the pitch its image asks for. On a frame without spots that of its too-wide
-  // candidates' widths (width_pitch.h); where other candidates fit the width model, too-wide
-  // ones are more likely feet, a ball or a robot close by. Else that of its turf seen above the
-  // computed horizon, which means the camera looks further down than the pose says
-  // (field_top_pitch.h). Such a rescan can leave the frame without spots but with candidates
-  // whose widths tell the pitch, hence more than one.
+  // with the pitch its image asks for. Such a rescan can leave the frame without spots but with
+  // candidates whose widths tell the pitch, hence more than one.
   constexpr int kMaxPitchRescans = 3;
   for (int rescan = 0; rescan < kMaxPitchRescans && !formsLines(result.features); ++rescan) {
-    std::optional<double> offset;
-    double* applied = &diag.width_pitch_rad;
-    if (result.spots.empty()) {
-      offset = fitPitchToWidths(camera_, diag.spot_stats.too_wide_runs, config_.spots,
-                                config_.width_pitch);
-    }
-    if (!offset) {
-      offset =
-          pitchToSeeFieldTop(image, diag.field_color, camera_, start_rows, config_.field_top_pitch);
-      applied = &diag.field_top_pitch_rad;
-    }
-    if (!offset) break;
-    addPitch(*offset, &recorded, &pose, &start_rows, &result);
+    const std::optional<PitchRequest> request = pitchTheImageAsksFor(image, result, start_rows);
+    if (!request) break;
+    addPitch(request->offset_rad, &recorded, &pose, &start_rows, &result);
     diag.spot_stats = LineSpotStats{};  // the new scan's
     findSpots(image, start_rows, &result);
     all_rays = fitFeatures(pose, &result);
-    *applied += *offset;
+    diag.*(request->diagnostic) += request->offset_rad;
   }
   diag.num_spots = static_cast<int>(result.spots.size());
   diag.time_spots_ms += msSince(&step);  // the rescans
@@ -165,6 +151,25 @@ void VisionPipeline::addPitch(double offset, Pose3* recorded, Pose3* pose,
   *pose = corrector_->corrected(*recorded);
   usePose(*pose, result);
   *start_rows = scanStartRows(camera_, config_.horizon);
+}
+
+std::optional<VisionPipeline::PitchRequest> VisionPipeline::pitchTheImageAsksFor(
+    const cv::Mat& image, const VisionResult& result, const std::vector<int>& start_rows) const {
+  const VisionDiagnostics& diag = result.diagnostics;
+  // On a frame without spots, the pitch its too-wide candidates' widths ask for (width_pitch.h);
+  // where other candidates fit the width model, too-wide ones are more likely feet, a ball or a
+  // robot close by.
+  if (result.spots.empty()) {
+    const std::optional<double> offset = fitPitchToWidths(camera_, diag.spot_stats.too_wide_runs,
+                                                          config_.spots, config_.width_pitch);
+    if (offset) return PitchRequest{*offset, &VisionDiagnostics::width_pitch_rad};
+  }
+  // Turf seen above the computed horizon: the camera looks further down than the pose says
+  // (field_top_pitch.h).
+  const std::optional<double> offset =
+      pitchToSeeFieldTop(image, diag.field_color, camera_, start_rows, config_.field_top_pitch);
+  if (offset) return PitchRequest{*offset, &VisionDiagnostics::field_top_pitch_rad};
+  return std::nullopt;
 }
 
 std::vector<SpotRay> VisionPipeline::fitFeatures(const Pose3& pose, VisionResult* result) const {

@@ -125,6 +125,17 @@ class VisionPipeline {
   /// start rows at it.
   void addPitch(double offset, Pose3* recorded, Pose3* pose, std::vector<int>* start_rows,
                 VisionResult* result);
+  /// A pitch offset (rad) the image asks for, and the diagnostic that sums it.
+  struct PitchRequest {
+    double offset_rad;
+    double VisionDiagnostics::*diagnostic;
+  };
+  /// For a frame whose spots form no line (`result` after its scan from `start_rows`): the
+  /// pitch under which its too-wide candidates have a line's width (a frame without spots), else
+  /// the pitch that puts its turf seen above the computed horizon below it; none when neither
+  /// asks for one.
+  std::optional<PitchRequest> pitchTheImageAsksFor(const cv::Mat& image, const VisionResult& result,
+                                                   const std::vector<int>& start_rows) const;
   /// Steps 5-6 on result's spots with camera_'s pose (`pose`): their undistorted rays but those
   /// on the robot's own body (returned), and the segments and circles they form (into result).
   std::vector<SpotRay> fitFeatures(const Pose3& pose, VisionResult* result) const;
