@@ -19,7 +19,11 @@ struct LineSegmentConfig {
   double max_rms_m = 0.02;                ///< line-fit residual limit
   double circle_radius_m = 0.75;          ///< centre-circle radius (set from the map); 0 = none
   double max_arc_radius_m = 3.0;          ///< bent chains a circle this small fits are arcs
-  double circle_radius_tolerance = 0.15;  ///< relative radius deviation accepted
+  double circle_radius_tolerance = 0.25;  ///< relative radius deviation accepted: a camera
+                                          ///< pitched 2.7 deg off puts the circle 15-25 % off
+                                          ///< its radius, and the pitch/roll corrector needs
+                                          ///< the arcs most then (it fits them to the exact
+                                          ///< radius itself; physar_nao_top)
   double circle_max_rms_m = 0.03;         ///< circle-fit residual limit
   int max_circle_rays = 24;               ///< rays kept per circle candidate (pose correction)
 };

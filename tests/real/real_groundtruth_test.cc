@@ -141,16 +141,17 @@ TEST(RealGroundTruthFrames, SevenFramesWithLinesHaveAGroundTruthPose) {
 
 TEST(RealGroundTruthFrames, PointToMapDistanceAndGoalLineAtTheRecordedPose) {
   REQUIRE_REAL_DATA();
-  // The target is a median <= 0.10 m on each frame; at the recorded camera poses no
-  // frame meets it. By range, the points' median distance is 0.05-0.26 m within 3 m and
-  // 0.6-1.1 m at 3-4 m: the recorded chain leaves the camera pitched 2.4-2.9 deg too little
-  // (the set's fit_dpitch), which moves a ground point at range r by up to r^2 / h x dpitch
-  // (0.41 m camera height, 2.7 deg: 0.5 m at 2 m, 1.0 m at 3 m). With fit_dpitch added (and
-  // the pitch corrector off) every top frame meets 0.10 m: see RealGroundTruthGlobalOnly below.
+  // The target is a median <= 0.10 m on each frame. The recorded chain leaves the
+  // camera pitched 2.4-2.9 deg too little (the set's fit_dpitch), which moves a ground point at
+  // range r by up to r^2 / h x dpitch (0.41 m camera height, 2.7 deg: 0.5 m at 2 m, 1.0 m at
+  // 3 m). The folder run in one pass, in order: the first five frames go uncorrected (medians
+  // 0.22-0.47 m), from red1_punt2 on the pitch/roll corrector applies what the frames so far
+  // say (0.040 and 0.015 m). With the tilt learned over the folder first every top frame meets
+  // 0.10 m: see RealGroundTruthGlobalOnly below.
   // Bounds: the measured medians (docs/vision.md) plus about 5 %.
   const std::map<std::string, double> bound_m = {
-      {"black1_point1_top", 0.25}, {"black1_point4_top", 0.25}, {"black1_point5_top", 0.49},
-      {"red1_punt1_top", 0.32},    {"red1_punt2_top", 0.32},    {"red1_punt4_top", 0.45},
+      {"black1_point1_top", 0.23}, {"black1_point4_top", 0.25}, {"black1_point5_top", 0.49},
+      {"red1_punt1_top", 0.32},    {"red1_punt2_top", 0.05},    {"red1_punt4_top", 0.03},
       {"red1_punt2_bottom", 0.22},  // bottom camera, 22 points at 0.5-1.5 m
   };
   for (const GroundTruthFrameReport& r : physarFrames()) {
@@ -181,11 +182,13 @@ TEST(RealGroundTruthFrames, VisibleLineCoverageAtTheRecordedPose) {
   EXPECT_GE(coverage, 0.25);
 }
 
-std::vector<GlobalCheckFrame> globalCheck(bool add_fit_dpitch, bool pose_correction) {
+std::vector<GlobalCheckFrame> globalCheck(bool add_fit_dpitch, bool pose_correction,
+                                          bool learn_tilt_first = false) {
   PipelineConfig config;
   config.vision.pose_correction.enabled = pose_correction;
   GlobalCheckConfig check;
   check.add_fit_dpitch = add_fit_dpitch;
+  check.learn_tilt_first = learn_tilt_first;
   return globalCheckAtGroundTruth(HOUGHLOC_REAL_DATA, kTop, config, check);
 }
 
@@ -223,9 +226,22 @@ TEST(RealGroundTruthGlobalOnly, FitDpitchWithTheDefaultConfig) {
     EXPECT_LE(f.metrics.median_distance_m, 0.10) << f.image;
   }
 }
-// At the recorded poses the target of 4 of 6 is not met: 0 of 6, the nearest hypotheses
-// 0.18-1.12 m off, because the points lie up to 1 m beside the map (see above);
-// houghloc-real-report prints that check beside these two.
+TEST(RealGroundTruthGlobalOnly, RecordedPoseWithTheTiltLearnedFirstMeetsTheTargets) {
+  REQUIRE_REAL_DATA();
+  // The recorded camera poses, as houghloc-offline --global-only --learn-tilt-first runs the
+  // folder: the vision sees all ten stills once first, so the pitch/roll corrector applies the
+  // folder's estimate (+2.9 deg pitch, +1.0 deg roll, sigmas 0.06-0.08 deg) from the first
+  // frame on. Measured 6 of 6 hits (0.01-0.10 m off), medians 0.007-0.065 m. In one pass the
+  // first frames go uncorrected: 2 of 6 (houghloc-real-report prints both).
+  const std::vector<GlobalCheckFrame> frames = globalCheck(false, true, true);
+  printGlobalCheck("physar_nao_top, recorded camera pose, tilt learned first", frames);
+  ASSERT_EQ(frames.size(), 6u);
+  EXPECT_GE(hits(frames), 4);  // the issue's >= 4 of 6
+  for (const GlobalCheckFrame& f : frames) {
+    EXPECT_LE(f.metrics.median_distance_m, 0.10) << f.image;
+    EXPECT_EQ(f.metrics.beyond_goal, 0) << f.image;
+  }
+}
 
 }  // namespace
 }  // namespace houghloc

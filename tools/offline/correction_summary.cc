@@ -8,6 +8,7 @@ namespace houghloc {
 void CorrectionSummary::add(const std::string& camera_id, const VisionDiagnostics& diagnostics) {
   Camera& camera = cameras_[camera_id];
   camera.applied = diagnostics.pose_correction_rad;
+  camera.applied_per_frame.push_back(camera.applied);
   camera.estimate = diagnostics.pose_correction_estimate_rad;
   camera.sigma = diagnostics.pose_correction_sigma_rad;
   if (diagnostics.pose_correction_map_inliers > 0) ++camera.map_matched_frames;
@@ -27,7 +28,24 @@ void CorrectionSummary::print() const {
                   c.sigma.y() * kDeg, c.map_matched_frames);
     }
     std::printf("\n");
+    if (const int late = framesFarFromTheFinalCorrection(id); late > 0) {
+      std::printf(
+          "  %d frames%s ran with a correction more than %.1f deg from this one; "
+          "--learn-tilt-first gives every frame the final one (stills, or a pose off from the "
+          "start)\n",
+          late, label.c_str(), kLateCorrectionRad * kDeg);
+    }
   }
+}
+
+int CorrectionSummary::framesFarFromTheFinalCorrection(const std::string& camera_id) const {
+  const auto camera = cameras_.find(camera_id);
+  if (camera == cameras_.end()) return 0;
+  int far = 0;
+  for (const Eigen::Vector2d& applied : camera->second.applied_per_frame) {
+    far += (applied - camera->second.applied).cwiseAbs().maxCoeff() > kLateCorrectionRad;
+  }
+  return far;
 }
 
 }  // namespace houghloc

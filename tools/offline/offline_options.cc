@@ -34,9 +34,15 @@ void addOfflineOptions(CLI::App& app, OfflineOptions* o) {
                "recompute metrics.json and trajectory.png from poses.csv/hypotheses.csv in OUT "
                "(with --global-only: of a --global-only run)")
       ->excludes(vision);
+  auto* learn_tilt = app.add_flag(
+      "--learn-tilt-first", o->learn_tilt_first,
+      "run the vision over the frames once before the run, so that every frame starts from what "
+      "all of them say about the camera's pitch and roll error (stills from one robot, or a "
+      "recording whose camera pose is off from its first frame)");
   app.add_option("--lcm-log", o->lcm_log,
                  "run on an lcm-logger log of houghloc-node instead of FOLDER: the images the node "
-                 "answered with HYPOTHESES (needs --camera-yaml and --field or --standard)");
+                 "answered with HYPOTHESES (needs --camera-yaml and --field or --standard)")
+      ->excludes(learn_tilt);
   app.add_option("--camera-yaml", o->camera_yamls,
                  "with --lcm-log: [ID=]camera.yaml, one per camera (no ID: the camera '')");
   app.add_option("--channel-prefix", o->channel_prefix, "with --lcm-log: the node's prefix");

@@ -24,10 +24,11 @@ struct OfflineOptions {
   bool quiet = false;
   bool evaluate_only = false;
   bool print_config = false;
-  int start = 0;        ///< first frame index
-  int end = -1;         ///< one past the last frame index; -1 = all
-  int threads = 1;      ///< 2: vision of frame k+1 overlaps localization of frame k
-  std::string lcm_log;  ///< --lcm-log: an lcm-logger log instead of FOLDER
+  bool learn_tilt_first = false;  ///< vision over the frame range once first (camera tilt)
+  int start = 0;                  ///< first frame index
+  int end = -1;                   ///< one past the last frame index; -1 = all
+  int threads = 1;                ///< 2: vision of frame k+1 overlaps localization of frame k
+  std::string lcm_log;            ///< --lcm-log: an lcm-logger log instead of FOLDER
   std::vector<std::string> camera_yamls;  ///< with --lcm-log: [ID=]camera.yaml per camera
   std::string channel_prefix;             ///< with --lcm-log: the node's --channel-prefix
 };

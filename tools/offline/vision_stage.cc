@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "tools/offline/offline_output.h"
+#include "tools/offline/progress.h"
 
 namespace houghloc {
 namespace {
@@ -24,6 +25,12 @@ double msSince(Clock::time_point start) {
 
 PipelineFrame pipelineFrame(const FrameRecord& frame) {
   return {frame.t_us, frame.camera_id, frame.robot_T_camera, frame.odometry};
+}
+
+/// A frame the pipeline refused (wrong size or type, a non-finite pose), named by its file.
+std::runtime_error frameError(const Recording& rec, const FrameRecord& frame,
+                              const std::invalid_argument& e) {
+  return std::runtime_error((fs::path(rec.folder) / frame.image).string() + ": " + e.what());
 }
 
 /// Image loading and the pipeline's vision half, fed strictly in frame order.
@@ -50,8 +57,7 @@ class VisionWorker {
     try {
       out.seen = pipeline_.see(pipelineFrame(*out.frame), *image);
     } catch (const std::invalid_argument& e) {
-      throw std::runtime_error((fs::path(rec.folder) / out.frame->image).string() + ": " +
-                               e.what());
+      throw frameError(rec, *out.frame, e);
     }
     out.vision_ms = msSince(start);
     if (keep_images_) out.image = std::move(image);
@@ -129,7 +135,26 @@ std::unique_ptr<LocalizationPipeline> makePipeline(const OfflineContext& context
     pipeline->setCamera(frame.camera_id, rec.intrinsicsFor(frame));
   }
   for (const LocalizationHint& hint : context.hints) pipeline->queueHint(hint);
+  if (context.options.learn_tilt_first) learnCameraTilt(context, *pipeline);
   return pipeline;
+}
+
+void learnCameraTilt(const OfflineContext& context, LocalizationPipeline& pipeline) {
+  ProgressReporter progress("learning the camera tilt", context.end_frame - context.first_frame,
+                            context.options.quiet);
+  for (int i = context.first_frame; i < context.end_frame; ++i) {
+    const FrameRecord& frame = context.recording.frames[static_cast<size_t>(i)];
+    std::string problem;  // reported by the run itself
+    if (const std::optional<cv::Mat> image = loadFrameImage(context, frame, &problem)) {
+      try {
+        pipeline.learnCameraTilt(pipelineFrame(frame), *image);
+      } catch (const std::invalid_argument& e) {
+        throw frameError(context.recording, frame, e);
+      }
+    }
+    progress.update(i + 1 - context.first_frame);
+  }
+  progress.finish();
 }
 
 void runVisionStage(const OfflineContext& context, LocalizationPipeline& pipeline, int threads,

@@ -33,8 +33,13 @@ void runVisionStage(const OfflineContext& context, LocalizationPipeline& pipelin
                     bool keep_images, const std::function<void(VisionFrame&)>& consume);
 
 /// The pipeline for a mode, with the context's configs, field and every camera of the frame
-/// range (throws RecordingError for a camera without intrinsics).
+/// range (throws RecordingError for a camera without intrinsics); with --learn-tilt-first its
+/// cameras' pitch/roll correctors have seen every frame of the range (learnCameraTilt).
 std::unique_ptr<LocalizationPipeline> makePipeline(const OfflineContext& context,
                                                    PipelineMode mode);
+
+/// Vision over the context's frame range in order, only to teach the pipeline's pitch/roll
+/// correctors (LocalizationPipeline::learnCameraTilt); unreadable images are left out.
+void learnCameraTilt(const OfflineContext& context, LocalizationPipeline& pipeline);
 
 }  // namespace houghloc

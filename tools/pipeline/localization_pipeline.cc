@@ -59,12 +59,16 @@ void LocalizationPipeline::setCamera(const std::string& id, const CameraIntrinsi
   intrinsics_[id] = intrinsics;
 }
 
-SeenFrame LocalizationPipeline::see(const PipelineFrame& frame, const cv::Mat& image) {
-  const auto intrinsics = intrinsics_.find(frame.camera_id);
+VisionPipeline& LocalizationPipeline::visionFor(const std::string& camera_id) {
+  const auto intrinsics = intrinsics_.find(camera_id);
   if (intrinsics == intrinsics_.end()) {
-    throw std::invalid_argument("no intrinsics for camera '" + frame.camera_id + "'");
+    throw std::invalid_argument("no intrinsics for camera '" + camera_id + "'");
   }
-  VisionPipeline& vision = cameras_.forCamera(frame.camera_id, intrinsics->second);
+  return cameras_.forCamera(camera_id, intrinsics->second);
+}
+
+SeenFrame LocalizationPipeline::see(const PipelineFrame& frame, const cv::Mat& image) {
+  VisionPipeline& vision = visionFor(frame.camera_id);
   std::optional<Pose2> field_T_robot;
   if (mode_ == PipelineMode::kFull)
     field_T_robot = feedback_.guessFor(next_sequence_, frame.odometry);
@@ -74,6 +78,11 @@ SeenFrame LocalizationPipeline::see(const PipelineFrame& frame, const cv::Mat& i
   seen.has_image = true;
   seen.sequence = next_sequence_++;
   return seen;
+}
+
+void LocalizationPipeline::learnCameraTilt(const PipelineFrame& frame, const cv::Mat& image) {
+  // Without a field pose: the corrector learns from the lines' geometry alone.
+  visionFor(frame.camera_id).process(image, frame.robot_T_camera, frame.t_us, std::nullopt);
 }
 
 SeenFrame LocalizationPipeline::seeNothing(const PipelineFrame& frame) {

@@ -101,6 +101,13 @@ class LocalizationPipeline {
     return locate(see(frame, image));
   }
 
+  /// Vision alone on one frame, only to teach its camera's pitch/roll corrector (no sequence
+  /// number, no localization; the field colour memory moves on as in see()). Run over a whole
+  /// folder before the run, every frame then starts from what all of them say about the
+  /// camera's tilt: a folder of stills from one robot, or a recording whose recorded camera
+  /// pose is off from its first frame. Throws like see().
+  void learnCameraTilt(const PipelineFrame& frame, const cv::Mat& image);
+
   /// A hint takes effect before the first frame whose t_us is at or after the hint's (hints
   /// with the same time in the order queued). Ignored by kGlobalOnly and kVisionOnly.
   void queueHint(const LocalizationHint& hint);
@@ -115,6 +122,10 @@ class LocalizationPipeline {
   const VisionPipeline* camera(const std::string& id) const { return cameras_.find(id); }
 
  private:
+  /// The camera's vision pipeline, made at its first frame; throws for a camera without
+  /// intrinsics.
+  VisionPipeline& visionFor(const std::string& camera_id);
+
   PipelineMode mode_;
   PipelineConfig config_;
   std::shared_ptr<const FieldModel> field_;

@@ -91,8 +91,7 @@ std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_d
   LocalizationPipeline pipeline(PipelineMode::kGlobalOnly, field, config);
   for (const FrameRecord& f : recording.frames)
     pipeline.setCamera(f.camera_id, recording.intrinsicsFor(f));
-  // Every frame in order, as houghloc-offline --global-only runs the folder.
-  for (const FrameRecord& f : recording.frames) {
+  const auto pipelineFrame = [&](const FrameRecord& f) {
     PipelineFrame frame;
     frame.t_us = f.t_us;
     frame.camera_id = f.camera_id;
@@ -100,7 +99,21 @@ std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_d
     frame.odometry = f.odometry;
     if (const auto d = dpitch.find(f.t_us); d != dpitch.end())
       frame.robot_T_camera.pitch += d->second;
-    const cv::Mat bgr = cv::imread((dir / f.image).string(), cv::IMREAD_COLOR);
+    return frame;
+  };
+  const auto readImage = [&](const FrameRecord& f) {
+    return cv::imread((dir / f.image).string(), cv::IMREAD_COLOR);
+  };
+  if (check.learn_tilt_first) {
+    for (const FrameRecord& f : recording.frames) {
+      if (const cv::Mat bgr = readImage(f); !bgr.empty())
+        pipeline.learnCameraTilt(pipelineFrame(f), bgr);
+    }
+  }
+  // Every frame in order, as houghloc-offline --global-only runs the folder.
+  for (const FrameRecord& f : recording.frames) {
+    const PipelineFrame frame = pipelineFrame(f);
+    const cv::Mat bgr = readImage(f);
     const SeenFrame seen = bgr.empty() ? pipeline.seeNothing(frame) : pipeline.see(frame, bgr);
     const PipelineResult located = pipeline.locate(seen);
     const std::optional<Pose2> truth = groundTruthAt(recording.ground_truth, f.t_us);

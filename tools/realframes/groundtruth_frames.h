@@ -36,6 +36,9 @@ struct GlobalCheckConfig {
   /// Add frames.csv's fit_dpitch (physar: the pitch the images want on top of the recorded
   /// chain) to each frame's camera pitch; frames without one keep the recorded pitch.
   bool add_fit_dpitch = false;
+  /// Run the vision over the folder once first (LocalizationPipeline::learnCameraTilt), as
+  /// houghloc-offline --learn-tilt-first does: every frame starts from the folder's tilt.
+  bool learn_tilt_first = false;
 };
 
 /// One ground-truth frame through LocalizationPipeline in kGlobalOnly mode (as houghloc-offline

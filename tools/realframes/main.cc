@@ -66,6 +66,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "houghloc-real-report: %s --global-only\n", folder.c_str());
       printGlobalCheck((folder + ", recorded camera pose").c_str(),
                        globalCheckAtGroundTruth(data_dir, folder, pipeline_config));
+      GlobalCheckConfig learn_first;
+      learn_first.learn_tilt_first = true;
+      printGlobalCheck((folder + ", recorded camera pose, --learn-tilt-first").c_str(),
+                       globalCheckAtGroundTruth(data_dir, folder, pipeline_config, learn_first));
       if (!folderHasFitDpitch(data_dir, folder)) continue;
       GlobalCheckConfig with_fit;
       with_fit.add_fit_dpitch = true;

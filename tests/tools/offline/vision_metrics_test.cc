@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "field_models/standard_fields.h"
+#include "tools/offline/correction_summary.h"
 #include "vision/camera_presets.h"
 
 namespace houghloc {
@@ -77,6 +78,25 @@ TEST(VisionMetrics, VisibleRowsAreMatchedByTimestamp) {
   rows[2].t_us = 7;
   EXPECT_EQ(visibleAt(rows, 7).size(), 2u);
   EXPECT_EQ(visibleAt(rows, 6).size(), 0u);
+}
+
+TEST(CorrectionSummary, CountsFramesFarFromTheFinalCorrection) {
+  // A camera corrected from its third frame on (+2 deg pitch, then +2.3 deg), and a second
+  // camera never corrected.
+  const double deg = M_PI / 180.0;
+  CorrectionSummary summary;
+  const std::vector<Eigen::Vector2d> applied = {
+      {0.0, 0.0}, {0.0, 0.0}, {0.0, 2.0 * deg}, {0.1 * deg, 2.3 * deg}, {0.0, 2.3 * deg}};
+  for (const Eigen::Vector2d& a : applied) {
+    VisionDiagnostics d;
+    d.pose_correction_rad = a;
+    summary.add("top", d);
+    summary.add("bottom", VisionDiagnostics{});
+  }
+  // 0.3 and 0.1 deg off the final one are within 0.5 deg; the two uncorrected frames are not.
+  EXPECT_EQ(summary.framesFarFromTheFinalCorrection("top"), 2);
+  EXPECT_EQ(summary.framesFarFromTheFinalCorrection("bottom"), 0);
+  EXPECT_EQ(summary.framesFarFromTheFinalCorrection("none"), 0);
 }
 
 }  // namespace

@@ -201,6 +201,34 @@ TEST(LocalizationPipeline, TwoThreadsGiveTheResultsOfOne) {
   }
 }
 
+TEST(LocalizationPipeline, LearningTheTiltFirstCorrectsTheFirstFrames) {
+  // The images are drawn at the preset's pose; the recorded pose has the camera pitched 2 deg
+  // too little, constant over the walk (a head joint offset).
+  const Walk walk(12);
+  const double error_rad = 2.0 * M_PI / 180.0;
+  const auto recorded = [&](int i) {
+    PipelineFrame frame = walk.frame(i);
+    frame.robot_T_camera.pitch -= error_rad;
+    return frame;
+  };
+  const double true_pitch = walk.camera.robot_T_camera.pitch;
+  LocalizationPipeline plain(PipelineMode::kVisionOnly, walk.field, {});
+  LocalizationPipeline learned(PipelineMode::kVisionOnly, walk.field, {});
+  for (LocalizationPipeline* p : {&plain, &learned}) p->setCamera("", walk.camera.intrinsics);
+  for (int i = 0; i < 12; ++i) learned.learnCameraTilt(recorded(i), walk.images[i]);
+  for (int i = 0; i < 3; ++i) {
+    const SeenFrame a = plain.see(recorded(i), walk.images[i]);
+    const SeenFrame b = learned.see(recorded(i), walk.images[i]);
+    EXPECT_EQ(b.sequence, i);  // learning is no step of the run
+    // Before its min_frames-th frame (3) the corrector applies nothing; after the learning
+    // pass the whole walk's estimate applies from the first frame on.
+    if (i < 2) EXPECT_DOUBLE_EQ(a.vision.robot_T_camera_used.pitch, true_pitch - error_rad) << i;
+    EXPECT_NEAR(b.vision.robot_T_camera_used.pitch, true_pitch, 0.1 * M_PI / 180.0) << i;
+  }
+  EXPECT_THROW(learned.learnCameraTilt(walk.frame(0, "other"), walk.images[0]),
+               std::invalid_argument);
+}
+
 TEST(LocalizationPipeline, RejectsWhatItCannotRun) {
   const Walk walk(1);
   EXPECT_THROW(LocalizationPipeline(PipelineMode::kFull, nullptr, PipelineConfig{}),
