@@ -57,11 +57,14 @@ copy; head -c 300 base/images/000002.jpg >c/images/000002.jpg
 offline truncated_image 0 "c/images/000002.jpg"
 copy; echo "not an image" >c/images/000002.jpg
 offline text_as_image 0 "c/images/000002.jpg: image unreadable, frame skipped"
+offline text_as_image_learning_tilt 0 "c/images/000002.jpg: image unreadable, frame skipped" \
+  --global-only --learn-tilt-first
 copy; rm c/images/000002.jpg
 offline missing_image 0 "c/images/000002.jpg"
 copy; "$RENDER" --standard spl --camera kid-wide --trajectory walk --frames 1 -q -o other >/dev/null
 cp other/images/000000.jpg c/images/000002.jpg
 offline image_of_other_size fail "c/images/000002.jpg: image is"
+offline image_of_other_size_learning_tilt fail "c/images/000002.jpg: image is" --learn-tilt-first
 
 # camera.yaml
 copy; sed -i '/image_width/d' c/camera.yaml
