@@ -4,12 +4,17 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 namespace houghloc {
 namespace {
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("houghloc_scenario_" + name);
+  // ctest runs every test in a process of its own, two at a time: one file per test (a shared
+  // bad.yaml let one test read another's text).
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const auto path =
+      std::filesystem::temp_directory_path() / ("houghloc_scenario_" + test + "_" + name);
   std::ofstream(path) << "%YAML:1.0\n---\n" << text;
   return path.string();
 }
