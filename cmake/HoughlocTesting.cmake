@@ -4,6 +4,8 @@
 set(HOUGHLOC_FIXTURE_DIR "${PROJECT_BINARY_DIR}/fixtures" CACHE PATH
   "Folder of the rendered test fixtures (shared between build trees)")
 
+option(HOUGHLOC_UNIT_TESTS_ONLY "Build and register only the test binaries labelled unit" OFF)
+
 # houghloc_add_test(NAME LABELS unit|accuracy|slow SOURCES ... DEPS ... [TIMEOUT s])
 # Builds one GoogleTest binary and registers each test case with ctest under the given labels.
 function(houghloc_add_test name)
@@ -13,6 +15,13 @@ function(houghloc_add_test name)
   endif()
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 300)
+  endif()
+  # A tree that runs only the unit tests (the sanitizer tree) keeps the other test binaries as
+  # targets, so that the lines that configure them still apply, but neither builds nor lists them.
+  if(HOUGHLOC_UNIT_TESTS_ONLY AND NOT "unit" IN_LIST ARG_LABELS)
+    add_executable(${name} EXCLUDE_FROM_ALL ${ARG_SOURCES})
+    target_link_libraries(${name} PRIVATE houghloc_options GTest::gtest GTest::gtest_main ${ARG_DEPS})
+    return()
   endif()
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE houghloc_options GTest::gtest GTest::gtest_main ${ARG_DEPS})

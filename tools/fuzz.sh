@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of tests/fuzz (the `asan` preset: clang-14, ASan + UBSan, in
-# build-asan/, the tree the sanitizer tests use) and runs them, each for SECONDS (default 30), on
+# build-asan/, the tree the sanitizer tests use) and runs them, each for SECONDS (default 30) and
+# HOUGHLOC_JOBS (default: the number of cores) at a time, on
 # a copy of its seed corpus tests/fuzz/corpus/<target>/ (new inputs go to
 # build-asan/corpus/<target>/, crashes to build-asan/crashes/<target>/). Exits non-zero when a target finds a crash, leak or timeout:
 # copy the input into tests/fuzz/corpus/<target>/ so fuzz_replay_<target> keeps it as a test.
@@ -31,14 +32,14 @@ fi
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
-status=0
-for t in "${TARGETS[@]}"; do
-  corpus="$BUILD_DIR/corpus/$t"
-  crashes="$BUILD_DIR/crashes/$t"
+# One target per core at a time (each is single-threaded): the same SECONDS per target, in a
+# fraction of the wall time. Each target's summary line is printed in the order of TARGETS.
+fuzz_one() {
+  local t=$1 corpus="$BUILD_DIR/corpus/$1" crashes="$BUILD_DIR/crashes/$1" start result runs
   mkdir -p "$corpus" "$crashes"
   cp -n tests/fuzz/corpus/"$t"/* "$corpus"/
   start=$(date +%s)
-  seed=()
+  local seed=()
   if [[ -n ${HOUGHLOC_FUZZ_SEED:-} ]]; then seed=(-seed="$HOUGHLOC_FUZZ_SEED"); fi
   if "$BUILD_DIR/tests/fuzz/${t}_fuzz" ${seed[@]+"${seed[@]}"} -max_total_time="$SECONDS_PER_TARGET" -timeout=10 \
       -rss_limit_mb=2048 -max_len=65536 -artifact_prefix="$crashes/" -print_final_stats=1 \
@@ -46,9 +47,27 @@ for t in "${TARGETS[@]}"; do
     result=ok
   else
     result="FOUND (see $BUILD_DIR/fuzz-$t.log, inputs in $crashes/)"
-    status=1
   fi
   runs=$(grep -oE "stat::number_of_executed_units: *[0-9]+" "$BUILD_DIR/fuzz-$t.log" | grep -oE "[0-9]+$" || echo "?")
-  echo "fuzz: $t $(( $(date +%s) - start )) s, $runs runs, corpus $(ls "$corpus" | wc -l): $result"
+  echo "fuzz: $t $(( $(date +%s) - start )) s, $runs runs, corpus $(ls "$corpus" | wc -l): $result" \
+    >"$BUILD_DIR/fuzz-$t.summary"
+}
+
+JOBS=${HOUGHLOC_JOBS:-$(nproc)}
+rm -f "$BUILD_DIR"/fuzz-*.summary
+running=0
+for t in "${TARGETS[@]}"; do
+  if (( running >= JOBS )); then
+    wait -n || true
+    running=$((running - 1))
+  fi
+  fuzz_one "$t" &
+  running=$((running + 1))
+done
+wait
+status=0
+for t in "${TARGETS[@]}"; do
+  cat "$BUILD_DIR/fuzz-$t.summary"
+  if grep -q FOUND "$BUILD_DIR/fuzz-$t.summary"; then status=1; fi
 done
 exit $status
