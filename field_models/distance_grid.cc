@@ -20,10 +20,11 @@ DistanceGrid::DistanceGrid(const FieldModel& field, const DistanceGridConfig& co
   last_col_ = cols_ - 1.0;
   last_row_ = rows_ - 1.0;
   values_.resize(static_cast<size_t>(cols_) * rows_);
+  NearestFeatureSearch search(field);
   for (int r = 0; r < rows_; ++r) {
     for (int c = 0; c < cols_; ++c) {
       const Eigen::Vector2d p = origin_ + config.resolution_m * Eigen::Vector2d(c, r);
-      const double d = nearestFeature(field, p).distance_m;
+      const double d = search.nearest(p).distance_m;
       values_[static_cast<size_t>(r) * cols_ + c] =
           static_cast<float>(std::min(d, config.max_distance_m));
     }

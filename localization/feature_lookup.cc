@@ -19,10 +19,11 @@ FeatureLookup::FeatureLookup(const FieldModel& field, double resolution_m, doubl
   const std::size_t most = std::max({field.segments.size(), field.arcs.size(), field.marks.size()});
   if (most >= 8192) throw std::invalid_argument("FeatureLookup: more than 8191 features of a kind");
   cells_.resize(static_cast<std::size_t>(cols_) * rows_);
+  NearestFeatureSearch search(field);
   for (int r = 0; r < rows_; ++r) {
     for (int c = 0; c < cols_; ++c) {
       const Eigen::Vector2d centre = origin_ + resolution_m * Eigen::Vector2d(c + 0.5, r + 0.5);
-      const FeatureRef f = nearestFeature(field, centre).feature;
+      const FeatureRef f = search.nearest(centre).feature;
       cells_[static_cast<std::size_t>(r) * cols_ + c] =
           f.index < 0 ? -1 : static_cast<std::int16_t>(f.index * 4 + static_cast<int>(f.kind));
     }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <limits>
 #include <random>
 
 #include "field_models/standard_fields.h"
@@ -75,6 +77,49 @@ TEST_P(NearestFeatureRandomTest, MatchesSampledReference) {
     EXPECT_GE(n.distance_m, reference - 2.5e-4) << p.transpose();
     EXPECT_NEAR((n.closest_point - p).norm(), n.distance_m, 1e-12);
   }
+}
+
+// The search that the precomputed maps use gives nearestFeature()'s answer bit for bit: on a
+// grid walked row by row (its warm start), at random points, on ties (the field's symmetry puts
+// many grid nodes at equal distance from two lines) and at points that are not finite.
+TEST_P(NearestFeatureRandomTest, SearchEqualsNearestFeatureBitForBit) {
+  FieldModel f = makeStandardField(GetParam());
+  // A partial arc, a dot and a cross of their own, whatever the standard field has.
+  f.arcs.push_back(Arc2{{1.0, 1.0}, 0.4, 0.3, 2.0});
+  f.marks.push_back(Mark{{-2.0, 1.5}, 0.1, MarkShape::kDot});
+  f.marks.push_back(Mark{{-2.5, -1.0}, 0.12, MarkShape::kCross});
+  NearestFeatureSearch search(f);
+  auto expectSame = [&](const Eigen::Vector2d& p) {
+    const NearestFeature want = nearestFeature(f, p), got = search.nearest(p);
+    ASSERT_EQ(got.feature.kind, want.feature.kind) << p.transpose();
+    ASSERT_EQ(got.feature.index, want.feature.index) << p.transpose();
+    // Bit for bit (NaN compares unequal to itself, so compare the bytes).
+    ASSERT_EQ(std::memcmp(&got.distance_m, &want.distance_m, sizeof(double)), 0) << p.transpose();
+    ASSERT_EQ(std::memcmp(got.closest_point.data(), want.closest_point.data(), 2 * sizeof(double)),
+              0)
+        << p.transpose();
+  };
+  const double hx = f.outerHalfLength() + 0.5, hy = f.outerHalfWidth() + 0.5;
+  int ties = 0;
+  for (double y = -hy; y <= hy; y += 0.05) {
+    for (double x = -hx; x <= hx; x += 0.05) {
+      expectSame({x, y});
+      const Eigen::Vector2d mirrored(-x, y);  // equidistant from both halves' lines
+      expectSame(mirrored);
+      ties += nearestFeature(f, {x, y}).distance_m == nearestFeature(f, mirrored).distance_m;
+    }
+  }
+  EXPECT_GT(ties, 100);
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> x(-hx - 2.0, hx + 2.0), y(-hy - 2.0, hy + 2.0);
+  for (int i = 0; i < 20000; ++i) expectSame({x(rng), y(rng)});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector2d& p : {Eigen::Vector2d(nan, 0.0), Eigen::Vector2d(0.0, inf),
+                                   Eigen::Vector2d(1e300, -1e300), Eigen::Vector2d(0.0, 0.0)}) {
+    expectSame(p);
+  }
+  EXPECT_EQ(NearestFeatureSearch(FieldModel{}).nearest({0.0, 0.0}).feature.index, -1);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllFields, NearestFeatureRandomTest,

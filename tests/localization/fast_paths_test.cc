@@ -303,7 +303,9 @@ TEST(FastAngleTest, NormalizeAngleEqualsTheGeneralWrap) {
       ASSERT_EQ(std::signbit(fast), std::signbit(general)) << a;
       ASSERT_EQ(fast, general) << a;
     }
-    if (std::isfinite(a)) ASSERT_TRUE(fast > -M_PI && fast <= M_PI) << a;
+    if (std::isfinite(a)) {
+      ASSERT_TRUE(fast > -M_PI && fast <= M_PI) << a;
+    }
   }
 }
 

@@ -73,7 +73,9 @@ TEST(WidthPitch, NoOffsetForWidthsNoPitchExplains) {
   typo.step_rad = 1e-12;
   typo.max_offset_rad = 1e9;
   const std::optional<double> any = fitPitchToWidths(recorded, pitched, LineSpotConfig{}, typo);
-  if (any) EXPECT_LE(std::abs(*any), M_PI / 2);
+  if (any) {
+    EXPECT_LE(std::abs(*any), M_PI / 2);
+  }
 }
 
 }  // namespace

@@ -222,7 +222,9 @@ TEST(LocalizationPipeline, LearningTheTiltFirstCorrectsTheFirstFrames) {
     EXPECT_EQ(b.sequence, i);  // learning is no step of the run
     // Before its min_frames-th frame (3) the corrector applies nothing; after the learning
     // pass the whole walk's estimate applies from the first frame on.
-    if (i < 2) EXPECT_DOUBLE_EQ(a.vision.robot_T_camera_used.pitch, true_pitch - error_rad) << i;
+    if (i < 2) {
+      EXPECT_DOUBLE_EQ(a.vision.robot_T_camera_used.pitch, true_pitch - error_rad) << i;
+    }
     EXPECT_NEAR(b.vision.robot_T_camera_used.pitch, true_pitch, 0.1 * M_PI / 180.0) << i;
   }
   EXPECT_THROW(learned.learnCameraTilt(walk.frame(0, "other"), walk.images[0]),
