@@ -27,7 +27,7 @@ Eigen::Vector2d closestPointOnMark(const Mark& mark, const Eigen::Vector2d& p);
 /// first feature in the map's order), several times faster. A feature is skipped when a cheap
 /// lower bound of its distance (its bounding box; the full circle of an arc) already exceeds the
 /// best distance found, and the search starts at the previous point's nearest feature, which on
-/// a grid is usually the nearest again.
+/// a grid is usually the nearest again. Reads `field`, which must outlive the search.
 class NearestFeatureSearch {
  public:
   explicit NearestFeatureSearch(const FieldModel& field);
