@@ -18,16 +18,18 @@ function(houghloc_add_test name)
   endif()
   # A tree that runs only the unit tests (the sanitizer tree) keeps the other test binaries as
   # targets, so that the lines that configure them still apply, but neither builds nor lists them.
+  set(unlisted "")
   if(HOUGHLOC_UNIT_TESTS_ONLY AND NOT "unit" IN_LIST ARG_LABELS)
-    add_executable(${name} EXCLUDE_FROM_ALL ${ARG_SOURCES})
-    target_link_libraries(${name} PRIVATE houghloc_options GTest::gtest GTest::gtest_main ${ARG_DEPS})
-    return()
+    set(unlisted EXCLUDE_FROM_ALL)
   endif()
-  add_executable(${name} ${ARG_SOURCES})
+  add_executable(${name} ${unlisted} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE houghloc_options GTest::gtest GTest::gtest_main ${ARG_DEPS})
   target_compile_definitions(${name} PRIVATE
     HOUGHLOC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     HOUGHLOC_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  if(unlisted)
+    return()
+  endif()
   gtest_discover_tests(${name}
     DISCOVERY_TIMEOUT 60
     PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT ${ARG_TIMEOUT})

@@ -67,7 +67,13 @@ done
 wait
 status=0
 for t in "${TARGETS[@]}"; do
-  cat "$BUILD_DIR/fuzz-$t.summary"
-  if grep -q FOUND "$BUILD_DIR/fuzz-$t.summary"; then status=1; fi
+  summary="$BUILD_DIR/fuzz-$t.summary"
+  if [[ ! -f $summary ]]; then
+    echo "fuzz: $t stopped before its summary (see $BUILD_DIR/fuzz-$t.log)"
+    status=1
+    continue
+  fi
+  cat "$summary"
+  if grep -q FOUND "$summary"; then status=1; fi
 done
 exit $status
