@@ -14,13 +14,14 @@ FrameRejection classifyFrame(const VisionResult& result) {
   const LineSpotStats& s = d.spot_stats;
   if (d.num_spots == 0) {
     if (s.candidates == 0) return FrameRejection::kNoCandidates;
-    const std::array<std::pair<int, FrameRejection>, 6> classes = {{
+    const std::array<std::pair<int, FrameRejection>, 7> classes = {{
         {s.too_wide, FrameRejection::kTooWide},
         {s.too_narrow, FrameRejection::kTooNarrow},
         {s.not_green_bounded, FrameRejection::kNotTurfBounded},
         {s.not_white, FrameRejection::kNotWhite},
         {s.soft_edge, FrameRejection::kSoftEdge},
         {s.compact_blob, FrameRejection::kCompactBlob},
+        {s.on_ball, FrameRejection::kOnBall},
     }};
     return std::max_element(classes.begin(), classes.end(),
                             [](const auto& a, const auto& b) { return a.first < b.first; })
@@ -54,6 +55,8 @@ const char* frameRejectionName(FrameRejection rejection) {
       return "candidates with soft edges";
     case FrameRejection::kCompactBlob:
       return "candidates not going on beside them";
+    case FrameRejection::kOnBall:
+      return "candidates on a ball";
     case FrameRejection::kNotProjected:
       return "spots beyond range or above the horizon";
     case FrameRejection::kDroppedNearBorder:

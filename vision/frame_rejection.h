@@ -17,11 +17,12 @@ enum class FrameRejection {
   kNotWhite,           ///< ... too saturated for paint
   kSoftEdge,           ///< ... with edges ramping like round bars
   kCompactBlob,        ///< ... whose run does not go on beside them (ball, feet)
+  kOnBall,             ///< ... lying on a ball
   kNotProjected,       ///< spots found, all beyond the range or above the horizon
   kDroppedNearBorder,  ///< spots found, all dropped near the boundary or on the own feet
 };
 
-constexpr int kNumFrameRejections = 12;
+constexpr int kNumFrameRejections = 13;
 
 /// Why this frame has no points (kNone when it has some).
 FrameRejection classifyFrame(const VisionResult& result);

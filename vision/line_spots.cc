@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vision/ball_spots.h"
 #include "vision/line_continuation.h"
 #include "vision/pixel_access.h"
 #include "vision/scanline.h"
@@ -20,6 +21,9 @@ class SpotScanner {
     threshold_ =
         static_cast<int>(std::max(config.min_contrast, config.noise_contrast * noise_sigma));
     dark_luma_ = static_cast<int>(config.dark_luma_ratio * color.luma_median);
+    ball_classes_.patch_luma = static_cast<int>(color.luma_median) + threshold_ / 4;
+    ball_classes_.patch_chroma = static_cast<float>(
+        config.ball.patch_grey_ratio * std::hypot(color.r - 1.0 / 3.0, color.g - 1.0 / 3.0));
   }
 
   std::size_t spotCount() const { return spots_->size(); }
@@ -46,23 +50,33 @@ class SpotScanner {
   }
 
   /// Drops the spots from index `first` on whose run does not go on in the scanlines beside
-  /// them (line_continuation.h). `buffer` must not be the one the scanline was decoded into.
+  /// them (line_continuation.h) or that lie on a ball (ball_spots.h). `buffer` must not be the
+  /// one the scanline was decoded into.
   template <typename Pixels>
-  void dropCompactBlobs(const Pixels& pixels, std::size_t first, RunBuffer* buffer) const {
+  void dropNonLineSpots(const Pixels& pixels, std::size_t first, RunBuffer* buffer) const {
     std::size_t kept = first;
     for (std::size_t i = first; i < spots_->size(); ++i) {
       const LineSpot spot = (*spots_)[i];
-      if (continuesBeside(pixels, spot, threshold_ / 2, RunBounds{color_, dark_luma_},
-                          config_.continuation, buffer)) {
-        (*spots_)[kept++] = spot;
-      } else {
+      if (!continuesBeside(pixels, spot, threshold_ / 2, RunBounds{color_, dark_luma_},
+                           config_.continuation, buffer)) {
         reject(spot.pixel, SpotRejection::kCompactBlob, &LineSpotStats::compact_blob);
+      } else if (onBall(pixels, spot, ballRadiusPx(spot), ball_classes_, config_.ball)) {
+        reject(spot.pixel, SpotRejection::kOnBall, &LineSpotStats::on_ball);
+      } else {
+        (*spots_)[kept++] = spot;
       }
     }
     spots_->resize(kept);
   }
 
  private:
+  /// The radius (px) a ball at the spot has in the image: its radius over the ground's metres
+  /// per pixel across the viewing direction there.
+  double ballRadiusPx(const LineSpot& spot) const {
+    const float across = widths_.metresPerPx(spot.pixel.x(), spot.pixel.y()).x();
+    return across > 0.f ? config_.ball.radius_m / across : 0.0;
+  }
+
   /// Ramp length (px) of the edge between the peak and the background along dir: the contrast
   /// over the steepest two-pixel luma step. Paint ends at a sharp edge (blur and anti-aliasing
   /// spread it over a few px); the shading of a round bar (the goal frame lying on the ground)
@@ -189,6 +203,7 @@ class SpotScanner {
   LineSpotStats* stats_;
   int threshold_ = 0;
   int dark_luma_ = 0;
+  BallClasses ball_classes_{color_, 0, 0.f};
 };
 
 /// Scans the grid's columns, then its rows, each stretch below the boundary and above the
@@ -206,7 +221,7 @@ void scanGrid(const Pixels& pixels, const FieldBoundary& boundary, const ScanGri
     const std::size_t first = scanner.spotCount();
     scanner.scan(scanline(pixels.columnRun(column.u, column.v_begin, n, &buffer), n, column.u,
                           column.v_begin, 0, 1));
-    scanner.dropCompactBlobs(pixels, first, &beside_buffer);
+    scanner.dropNonLineSpots(pixels, first, &beside_buffer);
   }
   for (int v : grid.rows) {
     // Scan each stretch of the row that lies below the boundary.
@@ -222,7 +237,7 @@ void scanGrid(const Pixels& pixels, const FieldBoundary& boundary, const ScanGri
         const std::size_t first = scanner.spotCount();
         scanner.scan(
             scanline(pixels.rowRun(begin, v, u - begin, &buffer), u - begin, begin, v, 1, 0));
-        scanner.dropCompactBlobs(pixels, first, &beside_buffer);
+        scanner.dropNonLineSpots(pixels, first, &beside_buffer);
       }
     }
   }

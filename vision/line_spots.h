@@ -22,6 +22,23 @@ struct LineContinuationConfig {
   double width_tolerance_px = 1.5;  ///< this ratio of the spot's, plus this many px (far lines)
 };
 
+/// The ball (ball_spots.h): the chords of its white between the black patches and the rim look
+/// like short pieces of line to the spot tests; a spot on a round blob of the ball's size that
+/// is not turf, has dark patches and turf around it is dropped.
+struct BallConfig {
+  bool enabled = true;
+  double radius_m = 0.05;             ///< SPL (10 cm ball); KidSize about 0.075, MSL 0.11
+  double min_radius_px = 4.0;         ///< balls seen smaller than this are not looked for
+  double min_radius_ratio = 0.5;      ///< the blob's radius as a share of the ball's expected
+  double max_radius_ratio = 2.2;      ///< one lies between these: nominal camera poses and
+                                      ///< intrinsics put it off by up to 2x (scarrix frames)
+  double max_roundness = 1.6;         ///< largest / smallest of its four radii from the centre
+  double min_patch_share = 0.1;       ///< samples inside that are dark grey: nearer grey than
+  double patch_grey_ratio = 0.4;      ///< this share of the turf's distance to grey, not white
+  double ring_ratio = 1.4;            ///< turf sampled at this many radii from the centre ...
+  double min_ring_turf_share = 0.5;   ///< ... at least this share (feet or a line may touch it)
+};
+
 struct LineSpotConfig {
   double min_contrast = 18.0;   ///< luma (0-255) a line must rise above the turf on both sides
   double noise_contrast = 3.5;  ///< ... and at least this many turf noise sigmas: the
@@ -47,6 +64,7 @@ struct LineSpotConfig {
                                          ///< but the shading of a round white bar (the goal frame
                                          ///< lying on the ground)
   LineContinuationConfig continuation;
+  BallConfig ball;
   bool keep_rejected = false;  ///< list rejected candidates in LineSpotStats (overlays; slower)
 };
 
@@ -71,6 +89,7 @@ enum class SpotRejection {
   kNotWhite,
   kSoftEdge,
   kCompactBlob,  ///< the run does not go on beside the spot (LineContinuationConfig)
+  kOnBall,       ///< the spot lies on a ball (BallConfig)
 };
 
 /// A rejected candidate where it lay, for overlays (LineSpotStats::rejected).
@@ -88,6 +107,7 @@ struct LineSpotStats {
   int not_white = 0;
   int soft_edge = 0;     ///< edges ramping too slowly for paint (round bars)
   int compact_blob = 0;  ///< runs that do not go on beside them (ball, feet)
+  int on_ball = 0;       ///< spots on a ball (its white between the patches and the rim)
   /// The first kMaxTooWideRuns candidates rejected as too wide, as spots (pixel, width, expected,
   /// scan direction): a frame whose candidates are all too wide may have a pose that is off
   /// (width_pitch.h).

@@ -173,6 +173,7 @@ TEST(VisionPipeline, ABallAtTheFeetGivesNoPointsButTheLinesDo) {
                cv::FILLED, cv::LINE_AA);
   }
   VisionConfig config = configFor(view);
+  config.spots.ball.enabled = false;  // the continuation test alone (the ball test: below)
   VisionPipeline pipeline(view.preset.intrinsics, config);
   const VisionResult result = pipeline.process(image, view.preset.robot_T_camera);
   config.spots.continuation.enabled = false;
@@ -187,6 +188,46 @@ TEST(VisionPipeline, ABallAtTheFeetGivesNoPointsButTheLinesDo) {
   const PointScore score = testing::scorePoints(view, groundOf(result));
   EXPECT_GE(score.precision, 0.98);
   EXPECT_GE(static_cast<double>(result.ground.size()), 0.9 * result_without.ground.size());
+}
+
+TEST(VisionPipeline, TheBallTestAloneDropsTheSpotsOfABall) {
+  // The same ball at the feet, with the continuation test off: the ball test (ball_spots.h)
+  // finds the round blob with dark patches around each of its chords, and leaves the lines.
+  testing::SyntheticStyle style;
+  style.noise_sigma = 2.0;
+  const TestView& view = testing::testView("nao-bottom", "spl", Pose2(-1.0, 0.0, 0.3), style);
+  const CameraModel camera(view.preset.intrinsics, view.preset.robot_T_camera);
+  const auto pixel = [&](double x, double y, double z) {
+    const auto p = camera.project({x, y, z});
+    return cv::Point(static_cast<int>(std::lround(p->x())), static_cast<int>(std::lround(p->y())));
+  };
+  cv::Mat image = view.image.clone();
+  const double ball_x = 0.4, ball_y = -0.15;
+  const cv::Point centre = pixel(ball_x, ball_y, 0.05);
+  const int radius = std::abs(pixel(ball_x, ball_y - 0.05, 0.05).x - centre.x);
+  cv::circle(image, centre, radius, cv::Scalar(235, 235, 235), cv::FILLED, cv::LINE_AA);
+  for (const cv::Point& offset :
+       {cv::Point(0, 0), cv::Point(-1, -1), cv::Point(1, -1), cv::Point(-1, 1), cv::Point(1, 1)}) {
+    cv::circle(image, centre + offset * (radius * 6 / 10), radius / 4, cv::Scalar(30, 30, 30),
+               cv::FILLED, cv::LINE_AA);
+  }
+  VisionConfig config = configFor(view);
+  config.spots.continuation.enabled = false;
+  const VisionResult with_ball_test =
+      VisionPipeline(view.preset.intrinsics, config).process(image, view.preset.robot_T_camera);
+  config.spots.ball.enabled = false;
+  const VisionResult without =
+      VisionPipeline(view.preset.intrinsics, config).process(image, view.preset.robot_T_camera);
+  const int on_ball = spotsWithin(with_ball_test, centre, radius + 2);
+  const int on_ball_without = spotsWithin(without, centre, radius + 2);
+  std::printf("spots on the ball: %d (%d without the ball test), %d dropped as on a ball\n",
+              on_ball, on_ball_without, with_ball_test.diagnostics.spot_stats.on_ball);
+  EXPECT_GT(on_ball_without, 0);  // the case the test is for
+  EXPECT_EQ(on_ball, 0);
+  EXPECT_GE(with_ball_test.diagnostics.spot_stats.on_ball, on_ball_without);
+  // Every spot it drops lies on the ball: the others are the same.
+  EXPECT_EQ(with_ball_test.spots.size() + on_ball_without, without.spots.size());
+  EXPECT_GE(testing::scorePoints(view, groundOf(with_ball_test)).precision, 0.98);
 }
 
 TEST(VisionPipeline, DegenerateImagesGiveFewPoints) {

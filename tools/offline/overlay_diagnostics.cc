@@ -21,6 +21,8 @@ cv::Scalar rejectionColour(SpotRejection reason) {
       return {40, 80, 140};
     case SpotRejection::kCompactBlob:
       return {255, 255, 0};
+    case SpotRejection::kOnBall:
+      return {0, 0, 0};
   }
   return {255, 255, 255};
 }
