@@ -39,8 +39,8 @@ inline bool isPatch(const BgrBytes& bgr, const BallClasses& classes) {
 /// (the colour fringe of the camera's demosaicing).
 constexpr int kTurfRun = 3;
 
-/// Pixels from (u, v) in direction (du, dv) up to the first of kTurfRun turf pixels in a row; -1 when
-/// `limit` px pass first or the image ends (the blob goes on or cannot be seen whole).
+/// Pixels from (u, v) in direction (du, dv) up to the first of kTurfRun turf pixels in a row; -1
+/// when `limit` px pass first or the image ends (the blob goes on or cannot be seen whole).
 template <typename Pixels>
 int runToTurf(const Pixels& pixels, int u, int v, int du, int dv, int limit,
               const BallClasses& classes) {

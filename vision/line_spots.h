@@ -27,16 +27,17 @@ struct LineContinuationConfig {
 /// is not turf, has dark patches and turf around it is dropped.
 struct BallConfig {
   bool enabled = true;
-  double radius_m = 0.05;             ///< SPL (10 cm ball); KidSize about 0.075, MSL 0.11
-  double min_radius_px = 4.0;         ///< balls seen smaller than this are not looked for
-  double min_radius_ratio = 0.5;      ///< the blob's radius as a share of the ball's expected
-  double max_radius_ratio = 2.2;      ///< one lies between these: nominal camera poses and
-                                      ///< intrinsics put it off by up to 2x (scarrix frames)
-  double max_roundness = 1.6;         ///< largest / smallest of its four radii from the centre
-  double min_patch_share = 0.1;       ///< samples inside that are dark grey: nearer grey than
-  double patch_grey_ratio = 0.4;      ///< this share of the turf's distance to grey, not white
-  double ring_ratio = 1.4;            ///< turf sampled at this many radii from the centre ...
-  double min_ring_turf_share = 0.5;   ///< ... at least this share (feet or a line may touch it)
+  double radius_m = 0.05;            ///< SPL (10 cm ball); KidSize about 0.075, MSL 0.11
+  double min_radius_px = 6.0;        ///< balls seen smaller than this are not looked for
+                                     ///< (their chords are compact blobs: continuation)
+  double min_radius_ratio = 0.5;     ///< the blob's radius as a share of the ball's expected
+  double max_radius_ratio = 2.2;     ///< one lies between these: nominal camera poses and
+                                     ///< intrinsics put it off by up to 2x (scarrix frames)
+  double max_roundness = 1.6;        ///< largest / smallest of its four radii from the centre
+  double min_patch_share = 0.1;      ///< samples inside that are dark grey: nearer grey than
+  double patch_grey_ratio = 0.4;     ///< this share of the turf's distance to grey, not white
+  double ring_ratio = 1.4;           ///< turf sampled at this many radii from the centre ...
+  double min_ring_turf_share = 0.5;  ///< ... at least this share (feet or a line may touch it)
 };
 
 struct LineSpotConfig {

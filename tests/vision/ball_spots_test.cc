@@ -69,10 +69,10 @@ TEST_F(BallSpotsTest, TurfIsEstimated) {
 TEST_F(BallSpotsTest, ChordsBetweenPatchesAndRimLieOnTheBall) {
   drawBall(&image_, kCentre, kRadius);
   // The white chords above, below and beside the middle patch, and one near the rim.
-  for (const cv::Point& chord : {kCentre + cv::Point(0, -kRadius * 6 / 10),
-                                 kCentre + cv::Point(0, kRadius * 6 / 10),
-                                 kCentre + cv::Point(kRadius * 6 / 10, 0),
-                                 kCentre + cv::Point(-kRadius * 8 / 10, kRadius / 8)}) {
+  for (const cv::Point& chord :
+       {kCentre + cv::Point(0, -kRadius * 6 / 10), kCentre + cv::Point(0, kRadius * 6 / 10),
+        kCentre + cv::Point(kRadius * 6 / 10, 0),
+        kCentre + cv::Point(-kRadius * 8 / 10, kRadius / 8)}) {
     EXPECT_TRUE(onBallAt(chord, kRadius)) << chord;
   }
 }

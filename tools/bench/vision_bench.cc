@@ -86,17 +86,21 @@ void BM_VisionPipeline(benchmark::State& state, BenchSet& (*get)()) {
   });
 }
 
-/// The pipeline without the continuation test of its spots (LineContinuationConfig): what that
+/// The pipeline with one of its spot tests off (`off` turns it off in the config): what that
 /// test costs, measured in the same run.
-void BM_VisionPipelineNoContinuation(benchmark::State& state, BenchSet& (*get)()) {
+void BM_VisionPipelineWithout(benchmark::State& state, BenchSet& (*get)(),
+                              void (*off)(VisionConfig*)) {
   BenchSet& set = get();
   VisionConfig config = configFor(set);
-  config.spots.continuation.enabled = false;
+  off(&config);
   VisionPipeline pipeline(set.recording.intrinsicsFor(set.recording.frames[0]), config);
   runFrames(state, set, [&](const cv::Mat& image, const Pose3& pose) {
     return pipeline.process(image, pose).ground.size();
   });
 }
+
+void continuationOff(VisionConfig* config) { config->spots.continuation.enabled = false; }
+void ballTestOff(VisionConfig* config) { config->spots.ball.enabled = false; }
 
 void BM_OpenCvBaseline(benchmark::State& state, BenchSet& (*get)()) {
   BenchSet& set = get();
@@ -156,10 +160,16 @@ void BM_VisionYuyvConvertFirst(benchmark::State& state, BenchSet& (*get)()) {
 }
 
 BENCHMARK_CAPTURE(BM_VisionPipeline, 640x480, &vga)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_VisionPipelineNoContinuation, 640x480, &vga)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionPipelineWithout, no_continuation_640x480, &vga, &continuationOff)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionPipelineWithout, no_ball_test_640x480, &vga, &ballTestOff)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_OpenCvBaseline, 640x480, &vga)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionPipeline, 1280x720, &hd)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_VisionPipelineNoContinuation, 1280x720, &hd)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionPipelineWithout, no_continuation_1280x720, &hd, &continuationOff)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionPipelineWithout, no_ball_test_1280x720, &hd, &ballTestOff)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_OpenCvBaseline, 1280x720, &hd)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionYuyvInPlace, 640x480, &vga)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionYuyvDecoded, 640x480, &vga)->Unit(benchmark::kMillisecond);
