@@ -150,10 +150,16 @@ int spotsWithin(const VisionResult& result, const cv::Point& centre, int radius_
   return n;
 }
 
-TEST(VisionPipeline, ABallAtTheFeetGivesNoPointsButTheLinesDo) {
-  // The bottom camera sees a ball 0.35 m ahead about as wide as a line there; its white patches
-  // between black ones and its rim against the turf are runs of a line's width with turf beside
-  // them. What tells them from a line is that they do not go on in the scanlines beside them.
+/// The bottom camera's view of the SPL field with a ball drawn at (x, y) on the ground (robot
+/// frame): white, black patches in the middle and at four places around it.
+struct BallView {
+  const TestView& view;
+  cv::Mat image;
+  cv::Point centre;
+  int radius = 0;  ///< px
+};
+
+BallView ballAtTheFeet(double ball_x, double ball_y) {
   testing::SyntheticStyle style;
   style.noise_sigma = 2.0;
   const TestView& view = testing::testView("nao-bottom", "spl", Pose2(-1.0, 0.0, 0.3), style);
@@ -162,16 +168,27 @@ TEST(VisionPipeline, ABallAtTheFeetGivesNoPointsButTheLinesDo) {
     const auto p = camera.project({x, y, z});
     return cv::Point(static_cast<int>(std::lround(p->x())), static_cast<int>(std::lround(p->y())));
   };
-  cv::Mat image = view.image.clone();
-  const double ball_x = 0.35, ball_y = 0.12;
-  const cv::Point centre = pixel(ball_x, ball_y, 0.05);
-  const int radius = std::abs(pixel(ball_x, ball_y - 0.05, 0.05).x - centre.x);
-  cv::circle(image, centre, radius, cv::Scalar(235, 235, 235), cv::FILLED, cv::LINE_AA);
+  BallView ball{view, view.image.clone(), pixel(ball_x, ball_y, 0.05), 0};
+  ball.radius = std::abs(pixel(ball_x, ball_y - 0.05, 0.05).x - ball.centre.x);
+  cv::circle(ball.image, ball.centre, ball.radius, cv::Scalar(235, 235, 235), cv::FILLED,
+             cv::LINE_AA);
   for (const cv::Point& offset :
        {cv::Point(0, 0), cv::Point(-1, -1), cv::Point(1, -1), cv::Point(-1, 1), cv::Point(1, 1)}) {
-    cv::circle(image, centre + offset * (radius * 6 / 10), radius / 4, cv::Scalar(30, 30, 30),
-               cv::FILLED, cv::LINE_AA);
+    cv::circle(ball.image, ball.centre + offset * (ball.radius * 6 / 10), ball.radius / 4,
+               cv::Scalar(30, 30, 30), cv::FILLED, cv::LINE_AA);
   }
+  return ball;
+}
+
+TEST(VisionPipeline, ABallAtTheFeetGivesNoPointsButTheLinesDo) {
+  // The bottom camera sees a ball 0.35 m ahead about as wide as a line there; its white patches
+  // between black ones and its rim against the turf are runs of a line's width with turf beside
+  // them. What tells them from a line is that they do not go on in the scanlines beside them.
+  const BallView ball = ballAtTheFeet(0.35, 0.12);
+  const TestView& view = ball.view;
+  const cv::Mat& image = ball.image;
+  const cv::Point& centre = ball.centre;
+  const int radius = ball.radius;
   VisionConfig config = configFor(view);
   config.spots.ball.enabled = false;  // the continuation test alone (the ball test: below)
   VisionPipeline pipeline(view.preset.intrinsics, config);
@@ -193,24 +210,11 @@ TEST(VisionPipeline, ABallAtTheFeetGivesNoPointsButTheLinesDo) {
 TEST(VisionPipeline, TheBallTestAloneDropsTheSpotsOfABall) {
   // The same ball at the feet, with the continuation test off: the ball test (ball_spots.h)
   // finds the round blob with dark patches around each of its chords, and leaves the lines.
-  testing::SyntheticStyle style;
-  style.noise_sigma = 2.0;
-  const TestView& view = testing::testView("nao-bottom", "spl", Pose2(-1.0, 0.0, 0.3), style);
-  const CameraModel camera(view.preset.intrinsics, view.preset.robot_T_camera);
-  const auto pixel = [&](double x, double y, double z) {
-    const auto p = camera.project({x, y, z});
-    return cv::Point(static_cast<int>(std::lround(p->x())), static_cast<int>(std::lround(p->y())));
-  };
-  cv::Mat image = view.image.clone();
-  const double ball_x = 0.4, ball_y = -0.15;
-  const cv::Point centre = pixel(ball_x, ball_y, 0.05);
-  const int radius = std::abs(pixel(ball_x, ball_y - 0.05, 0.05).x - centre.x);
-  cv::circle(image, centre, radius, cv::Scalar(235, 235, 235), cv::FILLED, cv::LINE_AA);
-  for (const cv::Point& offset :
-       {cv::Point(0, 0), cv::Point(-1, -1), cv::Point(1, -1), cv::Point(-1, 1), cv::Point(1, 1)}) {
-    cv::circle(image, centre + offset * (radius * 6 / 10), radius / 4, cv::Scalar(30, 30, 30),
-               cv::FILLED, cv::LINE_AA);
-  }
+  const BallView ball = ballAtTheFeet(0.4, -0.15);
+  const TestView& view = ball.view;
+  const cv::Mat& image = ball.image;
+  const cv::Point& centre = ball.centre;
+  const int radius = ball.radius;
   VisionConfig config = configFor(view);
   config.spots.continuation.enabled = false;
   const VisionResult with_ball_test =
