@@ -69,12 +69,16 @@ bool onBall(const Pixels& pixels, const LineSpot& spot, double radius_px,
   using ball_detail::isPatch;
   using ball_detail::isTurf;
   using ball_detail::runToTurf;
-  if (!config.enabled || !(radius_px >= config.min_radius_px)) return false;
+  // A ball larger than the image cannot be judged (and its walks would not fit an int).
+  if (!config.enabled || !(radius_px >= config.min_radius_px) ||
+      radius_px > pixels.cols() + pixels.rows()) {
+    return false;
+  }
   const int limit = static_cast<int>(std::ceil(2.0 * config.max_radius_ratio * radius_px));
   const int u = static_cast<int>(std::lround(spot.pixel.x()));
   const int v = static_cast<int>(std::lround(spot.pixel.y()));
-  // Along the scanline first: the spot's run ends in turf on both sides, so the walk across the
-  // scan direction is the one that ends early for a line.
+  // The chord along the row, then along the column: a line runs on past `limit` along one of
+  // them, which ends the test there (each line spot pays that one walk).
   const int left = runToTurf(pixels, u, v, -1, 0, limit, classes);
   const int right = left < 0 ? -1 : runToTurf(pixels, u, v, 1, 0, limit, classes);
   const int up = right < 0 ? -1 : runToTurf(pixels, u, v, 0, -1, limit, classes);

@@ -28,8 +28,8 @@ struct LineContinuationConfig {
 struct BallConfig {
   bool enabled = true;
   double radius_m = 0.05;            ///< SPL (10 cm ball); KidSize about 0.075, MSL 0.11
-  double min_radius_px = 6.0;        ///< balls seen smaller than this are not looked for
-                                     ///< (their chords are compact blobs: continuation)
+  double min_radius_px = 6.0;        ///< balls seen smaller than this are not looked for (on
+                                     ///< the real frames 6 drops what 4 does, for less time)
   double min_radius_ratio = 0.5;     ///< the blob's radius as a share of the ball's expected
   double max_radius_ratio = 2.2;     ///< one lies between these: nominal camera poses and
                                      ///< intrinsics put it off by up to 2x (scarrix frames)
