@@ -29,10 +29,8 @@ inline bool isTurf(const BgrBytes& bgr, const BallClasses& classes) {
 /// light). Turf in a shadow keeps most of its colour, and the grey blend at a line's edge is
 /// brighter than the turf beside it.
 inline bool isPatch(const BgrBytes& bgr, const BallClasses& classes) {
-  if (FieldColor::luma(bgr.data()) >= classes.patch_luma) return false;
-  const float sum = static_cast<float>(bgr[0] + bgr[1] + bgr[2]);
-  const float dr = bgr[2] - sum / 3.f, dg = bgr[1] - sum / 3.f;
-  return dr * dr + dg * dg < classes.patch_chroma * classes.patch_chroma * sum * sum;
+  return FieldColor::luma(bgr.data()) < classes.patch_luma &&
+         FieldColor::isNearGrey(bgr.data(), classes.patch_chroma);
 }
 
 /// Turf in a row that ends a blob: a pixel or two at the edge of a black patch pass for turf

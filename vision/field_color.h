@@ -59,10 +59,12 @@ struct FieldColor {
     const float tolerance = radius * sum + chroma_noise;
     return dr * dr + dg * dg < tolerance * tolerance;
   }
-  bool isWhitish(const uchar* bgr) const {
+  bool isWhitish(const uchar* bgr) const { return isNearGrey(bgr, white_radius); }
+  /// Whether the pixel's chromaticity lies within `radius` of grey (1/3, 1/3).
+  static bool isNearGrey(const uchar* bgr, float radius) {
     const float sum = static_cast<float>(bgr[0] + bgr[1] + bgr[2]);
     const float dr = bgr[2] - sum / 3.f, dg = bgr[1] - sum / 3.f;
-    return dr * dr + dg * dg < white_radius * white_radius * sum * sum;
+    return dr * dr + dg * dg < radius * radius * sum * sum;
   }
 };
 

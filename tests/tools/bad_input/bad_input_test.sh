@@ -98,6 +98,19 @@ PY
   offline camera_bad_indentation fail "c/camera.yaml: line 2: indented less than the first key"
 }
 
+# bad_numbers FILE FIRST_COLUMN "NAMES" "VALUES": one case per value in each named column (from
+# FIRST_COLUMN on, 1-based) of row 3 of the recording's FILE; the run must stop naming them.
+bad_numbers() {
+  local file=$1 col=$2 name bad
+  for name in $3; do
+    for bad in $4; do
+      copy; awk -F, -v OFS=, -v c="$col" -v v="$bad" 'NR == 3 { $c = v } { print }' "$BASE/$file" >"c/$file"
+      offline "${file%.csv}_${name}_$bad" fail "c/$file:3: column '$name': '$bad' is not a finite number"
+    done
+    col=$((col + 1))
+  done
+}
+
 recordings() {
   # frames.csv, groundtruth.csv, hints.csv
   copy; sed -i '3s/,[^,]*$//' c/frames.csv
@@ -110,14 +123,8 @@ recordings() {
   offline csv_text_in_number fail "c/frames.csv:3: column 'odom_x': 'abc' is not a finite number"
   copy; awk -F, -v OFS=, 'NR == 3 { $4 = "" } { print }' "$BASE"/frames.csv >c/frames.csv
   offline frames_odometry_partly_empty fail "c/frames.csv:3: column 'odom_y' is empty"
-  col=3
-  for name in odom_x odom_y odom_theta cam_x cam_y cam_z cam_roll cam_pitch cam_yaw; do
-    for bad in nan inf -inf 1e309; do
-      copy; awk -F, -v OFS=, -v c="$col" -v v="$bad" 'NR == 3 { $c = v } { print }' "$BASE"/frames.csv >c/frames.csv
-      offline "frames_${name}_$bad" fail "c/frames.csv:3: column '$name': '$bad' is not a finite number"
-    done
-    col=$((col + 1))
-  done
+  bad_numbers frames.csv 3 "odom_x odom_y odom_theta cam_x cam_y cam_z cam_roll cam_pitch cam_yaw" \
+    "nan inf -inf 1e309"
   copy; awk -F, -v OFS=, 'NR == 3 { $2 = "12.5" } { print }' "$BASE"/frames.csv >c/frames.csv
   offline frames_fractional_time fail "c/frames.csv:3: column 't_us'"
   copy; awk -F, -v OFS=, 'NR == 3 { $2 = "99999999999999999999" } { print }' "$BASE"/frames.csv >c/frames.csv
@@ -127,14 +134,7 @@ recordings() {
   # One camera repeating a time (a clock glitch): both frames run, poses.csv keeps one row per time.
   copy; awk -F, -v OFS=, 'NR == 3 { t = $2 } NR == 4 { $2 = t } { print }' "$BASE"/frames.csv >c/frames.csv
   offline frames_time_repeated 0 ""
-  col=2
-  for name in x y theta; do
-    for bad in nan inf 1e309; do
-      copy; awk -F, -v OFS=, -v c="$col" -v v="$bad" 'NR == 3 { $c = v } { print }' "$BASE"/groundtruth.csv >c/groundtruth.csv
-      offline "groundtruth_${name}_$bad" fail "c/groundtruth.csv:3: column '$name': '$bad' is not a finite number"
-    done
-    col=$((col + 1))
-  done
+  bad_numbers groundtruth.csv 2 "x y theta" "nan inf 1e309"
   copy; sed -i '3p' c/groundtruth.csv
   offline groundtruth_duplicate_time fail "c/groundtruth.csv:4: t_us repeats"
   copy; printf 't_us,kind,x,y,theta,sigma_x,sigma_y,sigma_theta\n0,RESET_TO,1,0,0,0.1,0.1,nan\n' >c/hints.csv
