@@ -114,5 +114,53 @@ TEST_F(BallSpotsTest, ABallCutByTheImageBorderIsNotJudged) {
   EXPECT_FALSE(onBallAt(cv::Point(10, kCentre.y - kRadius * 6 / 10), kRadius));
 }
 
+/// The walk to the turf read pixel by pixel: the definition runToTurf must answer like.
+int runToTurfEveryPixel(const Bgr8Pixels& pixels, int u, int v, int du, int dv, int limit,
+                        const BallClasses& classes) {
+  int turf = 0;
+  for (int k = 1; k <= limit + ball_detail::kTurfRun - 1; ++k) {
+    const int x = u + du * k, y = v + dv * k;
+    if (x < 0 || y < 0 || x >= pixels.cols() || y >= pixels.rows()) return -1;
+    turf = ball_detail::isTurf(pixels.at(x, y), classes) ? turf + 1 : 0;
+    if (turf == ball_detail::kTurfRun) return k - ball_detail::kTurfRun + 1;
+  }
+  return -1;
+}
+
+TEST_F(BallSpotsTest, TheWalkToTheTurfAnswersAsReadingEveryPixel) {
+  // Rows of white with turf runs of 1-5 px at random places, some dense, some sparse; walks
+  // from every pixel, both ways, with limits short and long and past the image border.
+  cv::RNG rng(11);
+  for (int v = 0; v < image_.rows; ++v) {
+    const double turf_share = 0.05 + 0.5 * v / image_.rows;
+    for (int u = 0; u < image_.cols; ++u) {
+      if (rng.uniform(0.0, 1.0) < turf_share) {
+        u += rng.uniform(0, 5);  // this pixel and the ones skipped keep the turf
+      } else {
+        image_.at<cv::Vec3b>(v, u) = cv::Vec3b(235, 235, 235);
+      }
+    }
+  }
+  const Bgr8Pixels pixels(image_);
+  int walks = 0, found = 0;
+  for (int v = 0; v < image_.rows; v += 7) {
+    for (int u = 0; u < image_.cols; u += 3) {
+      for (const int limit : {1, 2, 3, 4, 7, 20, 400}) {
+        for (const auto& [du, dv] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+          const int expected = runToTurfEveryPixel(pixels, u, v, du, dv, limit, classes_);
+          ASSERT_EQ(ball_detail::runToTurf(pixels, u, v, du, dv, limit, classes_), expected)
+              << "from (" << u << ", " << v << ") along (" << du << ", " << dv << "), limit "
+              << limit;
+          ++walks;
+          found += expected >= 0;
+        }
+      }
+    }
+  }
+  // Both answers occur often: the comparison covers runs found and walks that end without one.
+  EXPECT_GT(found, walks / 5);
+  EXPECT_LT(found, walks * 4 / 5);
+}
+
 }  // namespace
 }  // namespace houghloc
