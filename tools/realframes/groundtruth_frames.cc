@@ -1,7 +1,10 @@
 #include "tools/realframes/groundtruth_frames.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <opencv2/imgcodecs.hpp>
@@ -80,47 +83,80 @@ std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_d
                                                        const std::string& folder,
                                                        const PipelineConfig& config,
                                                        const GlobalCheckConfig& check) {
-  const fs::path dir = fs::path(data_dir) / folder;
+  return globalCheckAtGroundTruth(data_dir, std::vector<std::string>{folder}, config, check);
+}
+
+std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_dir,
+                                                       const std::vector<std::string>& folders,
+                                                       const PipelineConfig& config,
+                                                       const GlobalCheckConfig& check) {
   std::vector<GlobalCheckFrame> out;
-  if (!hasGroundTruth(dir)) return out;
-  const Recording recording = readRecording(dir.string());
+  if (folders.empty()) return out;
+  // One robot's camera folders: each its recording; with more than one, a frame's camera id is
+  // its folder's name (each folder's own camera.yaml).
+  struct CameraFolder {
+    std::string name;
+    fs::path dir;
+    Recording recording;
+    std::map<std::int64_t, double> dpitch;
+  };
+  std::vector<CameraFolder> cameras;
+  for (const std::string& folder : folders) {
+    const fs::path dir = fs::path(data_dir) / folder;
+    if (!hasGroundTruth(dir)) return out;
+    cameras.push_back({folder, dir, readRecording(dir.string()),
+                       check.add_fit_dpitch ? fitDpitch(dir) : std::map<std::int64_t, double>{}});
+  }
+  struct Shot {
+    const CameraFolder* camera;
+    const FrameRecord* frame;
+  };
+  std::vector<Shot> shots;  // every frame of every folder, in time order (folders' order on ties)
+  for (const CameraFolder& c : cameras) {
+    for (const FrameRecord& f : c.recording.frames) shots.push_back({&c, &f});
+  }
+  std::stable_sort(shots.begin(), shots.end(),
+                   [](const Shot& a, const Shot& b) { return a.frame->t_us < b.frame->t_us; });
+  const auto cameraId = [&](const Shot& s) {
+    return cameras.size() == 1 ? s.frame->camera_id : s.camera->name + "/" + s.frame->camera_id;
+  };
   const auto field =
-      std::make_shared<const FieldModel>(makeStandardField(realFolderStandard(folder)));
-  const std::map<std::int64_t, double> dpitch =
-      check.add_fit_dpitch ? fitDpitch(dir) : std::map<std::int64_t, double>{};
+      std::make_shared<const FieldModel>(makeStandardField(realFolderStandard(folders.front())));
   LocalizationPipeline pipeline(PipelineMode::kGlobalOnly, field, config);
-  for (const FrameRecord& f : recording.frames)
-    pipeline.setCamera(f.camera_id, recording.intrinsicsFor(f));
-  const auto pipelineFrame = [&](const FrameRecord& f) {
+  for (const Shot& s : shots)
+    pipeline.setCamera(cameraId(s), s.camera->recording.intrinsicsFor(*s.frame));
+  const auto pipelineFrame = [&](const Shot& s) {
     PipelineFrame frame;
-    frame.t_us = f.t_us;
-    frame.camera_id = f.camera_id;
-    frame.robot_T_camera = f.robot_T_camera;
-    frame.odometry = f.odometry;
-    if (const auto d = dpitch.find(f.t_us); d != dpitch.end())
+    frame.t_us = s.frame->t_us;
+    frame.camera_id = cameraId(s);
+    frame.robot_T_camera = s.frame->robot_T_camera;
+    frame.odometry = s.frame->odometry;
+    if (const auto d = s.camera->dpitch.find(s.frame->t_us); d != s.camera->dpitch.end())
       frame.robot_T_camera.pitch += d->second;
     return frame;
   };
-  const auto readImage = [&](const FrameRecord& f) {
-    return cv::imread((dir / f.image).string(), cv::IMREAD_COLOR);
+  const auto readImage = [&](const Shot& s) {
+    return cv::imread((s.camera->dir / s.frame->image).string(), cv::IMREAD_COLOR);
   };
   if (check.learn_tilt_first) {
-    for (const FrameRecord& f : recording.frames) {
-      if (const cv::Mat bgr = readImage(f); !bgr.empty())
-        pipeline.learnCameraTilt(pipelineFrame(f), bgr);
+    for (const Shot& s : shots) {
+      if (const cv::Mat bgr = readImage(s); !bgr.empty())
+        pipeline.learnCameraTilt(pipelineFrame(s), bgr);
     }
   }
   // Every frame in order, as houghloc-offline --global-only runs the folder.
-  for (const FrameRecord& f : recording.frames) {
-    const PipelineFrame frame = pipelineFrame(f);
-    const cv::Mat bgr = readImage(f);
+  for (const Shot& s : shots) {
+    const PipelineFrame frame = pipelineFrame(s);
+    const cv::Mat bgr = readImage(s);
     const SeenFrame seen = bgr.empty() ? pipeline.seeNothing(frame) : pipeline.see(frame, bgr);
     const PipelineResult located = pipeline.locate(seen);
-    const std::optional<Pose2> truth = groundTruthAt(recording.ground_truth, f.t_us);
+    const std::optional<Pose2> truth =
+        groundTruthAt(s.camera->recording.ground_truth, s.frame->t_us);
     if (!truth) continue;
     GlobalCheckFrame r;
-    r.image = f.image;
-    r.t_us = f.t_us;
+    r.folder = s.camera->name;
+    r.image = s.frame->image;
+    r.t_us = s.frame->t_us;
     r.truth = *truth;
     r.points = static_cast<int>(seen.vision.ground.points.size());
     const Pose2 twin = mirrored(*truth);
@@ -138,12 +174,28 @@ std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_d
       }
       ++r.hypotheses;
     }
-    const CameraModel camera(recording.intrinsicsFor(f), frame.robot_T_camera);
+    const CameraModel camera(s.camera->recording.intrinsicsFor(*s.frame), frame.robot_T_camera);
     r.metrics =
         groundTruthMetrics(*field, *truth, camera, robotFramePoints(seen.vision.ground.points));
     out.push_back(std::move(r));
   }
   return out;
+}
+
+std::vector<std::vector<std::string>> sameRobotFolders(const std::string& data_dir,
+                                                       const std::vector<std::string>& folders) {
+  std::map<std::string, std::vector<std::string>> by_truth;  // groundtruth.csv's bytes
+  for (const std::string& folder : folders) {
+    const fs::path file = fs::path(data_dir) / folder / "groundtruth.csv";
+    std::ifstream in(file, std::ios::binary);
+    if (!in) continue;
+    by_truth[std::string(std::istreambuf_iterator<char>(in), {})].push_back(folder);
+  }
+  std::vector<std::vector<std::string>> groups;
+  for (auto& [truth, group] : by_truth) {
+    if (group.size() > 1) groups.push_back(std::move(group));
+  }
+  return groups;
 }
 
 }  // namespace houghloc

@@ -44,7 +44,7 @@ struct GlobalCheckConfig {
 /// One ground-truth frame through LocalizationPipeline in kGlobalOnly mode (as houghloc-offline
 /// --global-only runs it): its positioned hypotheses (heading-only ones are left out, as there).
 struct GlobalCheckFrame {
-  std::string image;
+  std::string folder, image;
   std::int64_t t_us = 0;
   Pose2 truth;
   int points = 0;
@@ -67,5 +67,20 @@ std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_d
                                                        const std::string& folder,
                                                        const PipelineConfig& config,
                                                        const GlobalCheckConfig& check = {});
+
+/// The same for the folders of one robot's cameras taken at the same moments (physar_nao_top and
+/// physar_nao_bottom: one top and one bottom image per spot): their frames in time order
+/// through one pipeline, each folder a camera (its own camera.yaml), so that with
+/// `vision: pose_correction: shared_between_cameras` the cameras share one pitch/roll
+/// corrector, as on the robot. The field is the first folder's standard.
+std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_dir,
+                                                       const std::vector<std::string>& folders,
+                                                       const PipelineConfig& config,
+                                                       const GlobalCheckConfig& check = {});
+
+/// Groups of folders with groundtruth.csv that are one robot's cameras: byte-equal
+/// groundtruth.csv files (the same spots at the same t_us). Groups of one are left out.
+std::vector<std::vector<std::string>> sameRobotFolders(const std::string& data_dir,
+                                                       const std::vector<std::string>& folders);
 
 }  // namespace houghloc

@@ -76,6 +76,21 @@ int main(int argc, char** argv) {
       printGlobalCheck((folder + ", camera pitch + fit_dpitch").c_str(),
                        globalCheckAtGroundTruth(data_dir, folder, pipeline_config, with_fit));
     }
+    // One robot's cameras together, one pitch/roll corrector for both (its error lies in the
+    // body or the head, which the cameras share), the tilt learned over all their frames first.
+    PipelineConfig shared = pipeline_config;
+    shared.vision.pose_correction.shared_between_cameras = true;
+    GlobalCheckConfig learn_first;
+    learn_first.learn_tilt_first = true;
+    for (const std::vector<std::string>& cameras : sameRobotFolders(data_dir, truth_folders)) {
+      std::string names;
+      for (const std::string& c : cameras) names += (names.empty() ? "" : " + ") + c;
+      std::fprintf(stderr, "houghloc-real-report: %s --global-only\n", names.c_str());
+      printGlobalCheck((names + " as one robot's cameras, shared_between_cameras: 1, recorded "
+                                "camera pose, --learn-tilt-first")
+                           .c_str(),
+                       globalCheckAtGroundTruth(data_dir, cameras, shared, learn_first));
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "houghloc-real-report: %s\n", e.what());
     return 1;
