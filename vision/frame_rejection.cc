@@ -27,9 +27,9 @@ FrameRejection classifyFrame(const VisionResult& result) {
                             [](const auto& a, const auto& b) { return a.first < b.first; })
         ->second;
   }
-  if (d.dropped_near_boundary + d.dropped_on_own_body >= d.num_spots) {
-    return FrameRejection::kDroppedNearBorder;
-  }
+  const int dropped = d.dropped_near_boundary + d.dropped_on_own_body;
+  if (dropped >= d.num_spots) return FrameRejection::kDroppedNearBorder;
+  if (dropped + d.dropped_isolated >= d.num_spots) return FrameRejection::kIsolated;
   return FrameRejection::kNotProjected;
 }
 
@@ -57,6 +57,8 @@ const char* frameRejectionName(FrameRejection rejection) {
       return "candidates not going on beside them";
     case FrameRejection::kOnBall:
       return "candidates on a ball";
+    case FrameRejection::kIsolated:
+      return "spots each without another near it";
     case FrameRejection::kNotProjected:
       return "spots beyond range or above the horizon";
     case FrameRejection::kDroppedNearBorder:

@@ -20,9 +20,10 @@ enum class FrameRejection {
   kOnBall,             ///< ... lying on a ball
   kNotProjected,       ///< spots found, all beyond the range or above the horizon
   kDroppedNearBorder,  ///< spots found, all dropped near the boundary or on the own feet
+  kIsolated,           ///< spots found, the rest of them each without another near it
 };
 
-constexpr int kNumFrameRejections = 13;
+constexpr int kNumFrameRejections = 14;
 
 /// Why this frame has no points (kNone when it has some).
 FrameRejection classifyFrame(const VisionResult& result);

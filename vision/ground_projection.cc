@@ -15,7 +15,7 @@ std::vector<SpotRay> spotRays(const CameraModel& camera, const std::vector<LineS
     const Eigen::Vector3d ray_robot = camera.pixelRay(spot.pixel.x(), spot.pixel.y());
     if (!ray_robot.allFinite()) continue;
     const Eigen::Vector3d ray_camera = camera_R_robot * ray_robot;
-    rays.push_back({ray_camera, spot.pixel, spot.vertical_scan});
+    rays.push_back({ray_camera, spot.pixel, spot.vertical_scan, spot.width_px});
   }
   return rays;
 }

@@ -36,6 +36,7 @@ struct SpotRay {
   Eigen::Vector3d ray_camera = Eigen::Vector3d::UnitX();
   Eigen::Vector2f pixel = Eigen::Vector2f::Zero();
   bool vertical_scan = false;
+  float width_px = 0.f;  ///< the spot's LineSpot::width_px
 };
 
 std::vector<SpotRay> spotRays(const CameraModel& camera, const std::vector<LineSpot>& spots);

@@ -40,6 +40,18 @@ struct BallConfig {
   double min_ring_turf_share = 0.5;  ///< ... at least this share (feet or a line may touch it)
 };
 
+/// The support a spot needs from the others before it becomes a point (isolated_spots.h; applied
+/// to the spots left after the own body and the boundary gap). A run this wide is a line near the
+/// camera, which crosses neighbouring scanlines (at most ScanGridConfig::max_step_px, 32 px,
+/// apart), so another spot lies within about three of those; alone it is a bar of some object
+/// (a robot's arm, leg or foot seen by the bottom camera). Narrow spots need none: a far or faint
+/// line often gives one spot only.
+struct SpotSupportConfig {
+  bool enabled = true;
+  double radius_px = 96.0;    ///< another spot (either scan direction) within this distance ...
+  double min_width_px = 8.0;  ///< ... for spots at least this wide (LineSpot::width_px)
+};
+
 struct LineSpotConfig {
   double min_contrast = 18.0;   ///< luma (0-255) a line must rise above the turf on both sides
   double noise_contrast = 3.5;  ///< ... and at least this many turf noise sigmas: the
@@ -66,6 +78,7 @@ struct LineSpotConfig {
                                          ///< lying on the ground)
   LineContinuationConfig continuation;
   BallConfig ball;
+  SpotSupportConfig support;
   bool keep_rejected = false;  ///< list rejected candidates in LineSpotStats (overlays; slower)
 };
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "vision/boundary_gap.h"
+#include "vision/isolated_spots.h"
 #include "vision/pixel_access.h"
 
 namespace houghloc {
@@ -116,10 +117,11 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
       result.horizon_rows = camera_.horizonRows();
     }
   }
-  const std::vector<SpotRay> rays = dropSpotsNearBoundary(
+  std::vector<SpotRay> rays = dropSpotsNearBoundary(
       all_rays, camera_, result.boundary, start_rows, config_.projection.min_boundary_gap_m,
       config_.projection.min_boundary_gap_range_m, &diag.dropped_near_boundary);
-  if (diag.dropped_near_boundary > 0 || !samePose(refined, pose)) {
+  diag.dropped_isolated = dropIsolated(&rays, config_.spots.support);
+  if (diag.dropped_near_boundary > 0 || diag.dropped_isolated > 0 || !samePose(refined, pose)) {
     result.features = fitLineFeatures(rays, refined, config_.projection, config_.segments);
   }
   diag.pose_correction_rad = {refined.roll - recorded.roll, refined.pitch - recorded.pitch};

@@ -52,6 +52,7 @@ struct VisionDiagnostics {
   int num_spots = 0;
   int dropped_near_boundary = 0;  ///< spots within min_boundary_gap_m of the field boundary
   int dropped_on_own_body = 0;    ///< spots on the robot's own feet (OwnBodyConfig)
+  int dropped_isolated = 0;       ///< then spots with no other near them (SpotSupportConfig)
   bool pose_correction_updated = false;
   Eigen::Vector2d pose_correction_rad = Eigen::Vector2d::Zero();  ///< (roll, pitch) applied
   /// The corrector's estimate before its significance gate, and its standard deviation (rad;

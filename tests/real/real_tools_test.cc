@@ -66,6 +66,21 @@ TEST(FrameRejection, NamesTheStageThatLeftAFrameEmpty) {
   VisionPipeline fresh(preset.intrinsics);
   EXPECT_EQ(classifyFrame(fresh.process(turf, preset.robot_T_camera)),
             FrameRejection::kNoCandidates);
+  // Spots found, dropped later: near the boundary or on the feet first, the rest for want of
+  // support (SpotSupportConfig).
+  VisionResult dropped;
+  dropped.diagnostics.field_color.valid = true;
+  dropped.boundary.found = true;
+  dropped.diagnostics.num_spots = 3;
+  dropped.diagnostics.dropped_near_boundary = 1;
+  dropped.diagnostics.dropped_isolated = 2;
+  EXPECT_EQ(classifyFrame(dropped), FrameRejection::kIsolated);
+  EXPECT_STREQ(frameRejectionName(FrameRejection::kIsolated), "spots each without another near it");
+  dropped.diagnostics.dropped_near_boundary = 3;
+  dropped.diagnostics.dropped_isolated = 0;
+  EXPECT_EQ(classifyFrame(dropped), FrameRejection::kDroppedNearBorder);
+  dropped.diagnostics.dropped_near_boundary = 1;
+  EXPECT_EQ(classifyFrame(dropped), FrameRejection::kNotProjected);
 }
 
 }  // namespace

@@ -101,6 +101,7 @@ void BM_VisionPipelineWithout(benchmark::State& state, BenchSet& (*get)(),
 
 void continuationOff(VisionConfig* config) { config->spots.continuation.enabled = false; }
 void ballTestOff(VisionConfig* config) { config->spots.ball.enabled = false; }
+void supportTestOff(VisionConfig* config) { config->spots.support.enabled = false; }
 
 void BM_OpenCvBaseline(benchmark::State& state, BenchSet& (*get)()) {
   BenchSet& set = get();
@@ -164,11 +165,15 @@ BENCHMARK_CAPTURE(BM_VisionPipelineWithout, no_continuation_640x480, &vga, &cont
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionPipelineWithout, no_ball_test_640x480, &vga, &ballTestOff)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionPipelineWithout, no_support_test_640x480, &vga, &supportTestOff)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_OpenCvBaseline, 640x480, &vga)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionPipeline, 1280x720, &hd)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionPipelineWithout, no_continuation_1280x720, &hd, &continuationOff)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionPipelineWithout, no_ball_test_1280x720, &hd, &ballTestOff)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VisionPipelineWithout, no_support_test_1280x720, &hd, &supportTestOff)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_OpenCvBaseline, 1280x720, &hd)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_VisionYuyvInPlace, 640x480, &vga)->Unit(benchmark::kMillisecond);
