@@ -149,9 +149,10 @@ TEST(RealGroundTruthFrames, PointToMapDistanceAndGoalLineAtTheRecordedPose) {
   // say (0.040 and 0.015 m). With the tilt learned over the folder first every top frame meets
   // 0.10 m: see RealGroundTruthGlobalOnly below.
   // Bounds: the measured medians (docs/vision.md) plus about 5 % (black1_point5_top: 0.466 ->
-  // 0.490 when the ball test took its one point on the ball).
+  // 0.490 when the ball test took one point on the ball, 0.513 when the support test took
+  // another: lying on the ball on the centre circle, both were nearer the map than the rest).
   const std::map<std::string, double> bound_m = {
-      {"black1_point1_top", 0.23}, {"black1_point4_top", 0.25}, {"black1_point5_top", 0.515},
+      {"black1_point1_top", 0.23}, {"black1_point4_top", 0.25}, {"black1_point5_top", 0.54},
       {"red1_punt1_top", 0.32},    {"red1_punt2_top", 0.05},    {"red1_punt4_top", 0.03},
       {"red1_punt2_bottom", 0.22},  // bottom camera, 22 points at 0.5-1.5 m
   };
@@ -167,7 +168,7 @@ TEST(RealGroundTruthFrames, PointToMapDistanceAndGoalLineAtTheRecordedPose) {
 TEST(RealGroundTruthFrames, VisibleLineCoverageAtTheRecordedPose) {
   REQUIRE_REAL_DATA();
   // Share of the map's line samples within 5 m in view with a point within 0.15 m, over the
-  // seven frames (measured 0.272, the column scan 0.425; black1_point4_top's 36 points lie
+  // seven frames (measured 0.354, the column scan 0.425; black1_point4_top's 36 points lie
   // beside the lines at the recorded pitch, 0.05 there). The far samples are missed for the
   // pitch bias above.
   long visible = 0, covered = 0, baseline_covered = 0;
