@@ -5,6 +5,8 @@
 #include <cmath>
 #include <unordered_set>
 
+#include "vision/cell_key.h"
+
 namespace houghloc {
 
 std::vector<SpotRay> spotRays(const CameraModel& camera, const std::vector<LineSpot>& spots) {
@@ -96,10 +98,7 @@ std::vector<GroundPoint> projectSpots(const std::vector<SpotRay>& rays, const Po
     }
     const std::int64_t cx = static_cast<std::int64_t>(std::floor(p->x() / cell));
     const std::int64_t cy = static_cast<std::int64_t>(std::floor(p->y() / cell));
-    // The key packs both cell indices; shifted as unsigned (a negative index shifted is UB).
-    const auto key = static_cast<std::int64_t>((static_cast<std::uint64_t>(cx) << 32) ^
-                                               (static_cast<std::uint64_t>(cy) & 0xffffffffu));
-    if (!cells.insert(key).second) {
+    if (!cells.insert(cellKey(cx, cy)).second) {
       if (stats) ++stats->thinned;
       continue;
     }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "vision/cell_key.h"
+
 namespace houghloc {
 namespace {
 
@@ -20,9 +22,9 @@ class PixelCells {
 
   bool hasNeighbour(std::size_t i, float radius_px) const {
     const auto [cx, cy] = cellOf(pixels_[i]);
-    for (long dy = -1; dy <= 1; ++dy) {
-      for (long dx = -1; dx <= 1; ++dx) {
-        const long long k = key({cx + dx, cy + dy});
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        const std::int64_t k = key({cx + dx, cy + dy});
         auto it =
             std::lower_bound(sorted_.begin(), sorted_.end(), std::make_pair(k, std::size_t{0}));
         for (; it != sorted_.end() && it->first == k; ++it) {
@@ -35,18 +37,17 @@ class PixelCells {
   }
 
  private:
-  std::pair<long, long> cellOf(const Eigen::Vector2f& p) const {
-    return {static_cast<long>(std::floor(p.x() / cell_)),
-            static_cast<long>(std::floor(p.y() / cell_))};
+  std::pair<std::int64_t, std::int64_t> cellOf(const Eigen::Vector2f& p) const {
+    return {static_cast<std::int64_t>(std::floor(p.x() / cell_)),
+            static_cast<std::int64_t>(std::floor(p.y() / cell_))};
   }
-  /// One number per cell (images are far smaller than 2^31 cells of a pixel or more).
-  static long long key(std::pair<long, long> cell) {
-    return cell.first * (1LL << 32) + cell.second;
+  static std::int64_t key(std::pair<std::int64_t, std::int64_t> cell) {
+    return cellKey(cell.first, cell.second);
   }
 
   const std::vector<Eigen::Vector2f>& pixels_;
   float cell_;
-  std::vector<std::pair<long long, std::size_t>> sorted_;
+  std::vector<std::pair<std::int64_t, std::size_t>> sorted_;
 };
 
 }  // namespace
