@@ -10,6 +10,7 @@
 #include "field_models/standard_fields.h"
 #include "localization/global_hough_localizer.h"
 #include "tools/baselines/grid_search.h"
+#include "tools/offline/evaluation_frames.h"
 #include "tools/synthetic/synthetic_ground_points.h"
 
 namespace houghloc {
@@ -32,29 +33,6 @@ SyntheticFrame makeFrame(const FieldModel& field, const AccuracyRun& run, std::m
 }
 
 }  // namespace
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-int correctRank(const std::vector<Pose2>& poses, const Pose2& truth, double* position_error,
-                double* heading_error) {
-  const Pose2 mirrored(-truth.x, -truth.y, truth.theta + M_PI);
-  for (std::size_t k = 0; k < poses.size(); ++k) {
-    for (const Pose2& t : {truth, mirrored}) {
-      const double e = (poses[k].translation() - t.translation()).norm();
-      const double a = std::abs(angleDifference(poses[k].theta, t.theta));
-      if (e <= 0.10 && a <= 3.0 * M_PI / 180.0) {
-        if (position_error) *position_error = e;
-        if (heading_error) *heading_error = a;
-        return static_cast<int>(k);
-      }
-    }
-  }
-  return -1;
-}
 
 std::string AccuracySummary::describe(const std::string& label) const {
   std::ostringstream s;
@@ -90,19 +68,19 @@ AccuracySummary evaluateGlobal(const AccuracyRun& run) {
     out.ghl_seconds += cpuSeconds() - t0;
     std::vector<Pose2> poses;
     for (const auto& h : hs) poses.push_back(h.field_T_robot);
-    double e = 0.0, a = 0.0;
-    const int rank = correctRank(poses, f.field_T_robot, &e, &a);
-    if (rank >= 0) {
+    const CorrectRank rank = correctRankUpToSymmetry(poses, f.field_T_robot);
+    if (rank.index >= 0) {
       ++out.ghl_any;
-      out.ghl_top1 += rank == 0;
-      out.ghl_top2 += rank <= 1;
-      out.position_errors_m.push_back(e);
-      out.heading_errors_rad.push_back(a);
+      out.ghl_top1 += rank.index == 0;
+      out.ghl_top2 += rank.answer <= 1;
+      const PoseError e = symmetricPoseError(poses[rank.index], f.field_T_robot);
+      out.position_errors_m.push_back(e.position_m);
+      out.heading_errors_rad.push_back(e.heading_rad);
     }
     if (run.positive_only) {
       poses.clear();
       for (const auto& h : positive.locate(f.ground)) poses.push_back(h.field_T_robot);
-      out.ghl_positive_any += correctRank(poses, f.field_T_robot, nullptr, nullptr) >= 0;
+      out.ghl_positive_any += correctRankUpToSymmetry(poses, f.field_T_robot).index >= 0;
     }
     if (run.grid) {
       const double t1 = cpuSeconds();
@@ -110,9 +88,9 @@ AccuracySummary evaluateGlobal(const AccuracyRun& run) {
       out.grid_seconds += cpuSeconds() - t1;
       poses.clear();
       for (const auto& o : optima) poses.push_back(o.field_T_robot);
-      const int grid_rank = correctRank(poses, f.field_T_robot, nullptr, nullptr);
-      out.grid_any += grid_rank >= 0;
-      out.grid_top1 += grid_rank == 0;
+      const CorrectRank grid_rank = correctRankUpToSymmetry(poses, f.field_T_robot);
+      out.grid_any += grid_rank.index >= 0;
+      out.grid_top1 += grid_rank.index == 0;
     }
   }
   return out;

@@ -6,6 +6,7 @@
 
 #include "field_models/pose2.h"
 #include "localization/pose_hypothesis.h"
+#include "tools/offline/evaluation_frames.h"  // median, correctRankUpToSymmetry
 
 namespace houghloc {
 
@@ -13,7 +14,9 @@ namespace houghloc {
 /// directions in view (DESIGN §5.3), from random poses.
 struct AccuracySummary {
   int frames = 0;
-  int ghl_any = 0, ghl_top1 = 0, ghl_top2 = 0;  ///< correct up to symmetry at any rank / top k
+  /// Correct up to symmetry (DESIGN §5.3, 0.10 m / 3 deg): at any rank, as the best, among the
+  /// two best distinct answers (tools/offline CorrectRank: a twin shares its pair's rank).
+  int ghl_any = 0, ghl_top1 = 0, ghl_top2 = 0;
   int grid_any = 0, grid_top1 = 0;
   int ghl_positive_any = 0;               ///< GHL without negative evidence
   std::vector<double> position_errors_m;  ///< of the correct GHL hypothesis
@@ -42,11 +45,5 @@ struct ParallelSummary {
   int within = 0;
 };
 ParallelSummary evaluateParallelOnly(const AccuracyRun& run);
-
-/// Rank of the first hypothesis correct up to symmetry (0.10 m, 3 deg), -1 when none.
-int correctRank(const std::vector<Pose2>& poses, const Pose2& truth, double* position_error,
-                double* heading_error);
-
-double median(std::vector<double> values);
 
 }  // namespace houghloc

@@ -48,6 +48,19 @@ bool isCorrectUpToSymmetry(const Pose2& estimate, const Pose2& truth) {
   return isCorrect(estimate, truth) || isCorrect(estimate, mirrored(truth));
 }
 
+CorrectRank correctRankUpToSymmetry(const std::vector<Pose2>& hypotheses, const Pose2& truth) {
+  std::vector<int> answer(hypotheses.size(), -1);
+  int answers = 0;
+  for (size_t k = 0; k < hypotheses.size(); ++k) {
+    for (size_t j = 0; j < k && answer[k] < 0; ++j) {
+      if (isCorrectUpToSymmetry(hypotheses[k], hypotheses[j])) answer[k] = answer[j];
+    }
+    if (answer[k] < 0) answer[k] = answers++;
+    if (isCorrectUpToSymmetry(hypotheses[k], truth)) return {static_cast<int>(k), answer[k]};
+  }
+  return {};
+}
+
 PoseError symmetricPoseError(const Pose2& estimate, const Pose2& truth) {
   const PoseError direct = poseError(estimate, truth);
   const PoseError twin = poseError(estimate, mirrored(truth));

@@ -35,6 +35,16 @@ PoseError poseError(const Pose2& estimate, const Pose2& truth);
 bool isCorrect(const Pose2& estimate, const Pose2& truth);
 /// Correct against ground truth or its point-symmetric twin (-x, -y, theta + pi).
 bool isCorrectUpToSymmetry(const Pose2& estimate, const Pose2& truth);
+/// Where the first hypothesis correct up to symmetry stands in a list, best first.
+struct CorrectRank {
+  int index = -1;  ///< position in the list; -1 when no hypothesis is correct
+  /// Rank among distinct answers: a pose and its point-symmetric twin explain a frame equally
+  /// well, so a hypothesis correct up to symmetry against an earlier one (its twin or a near
+  /// copy) shares that one's rank. Whether a list holds both twins then does not move the truth
+  /// out of the top two.
+  int answer = -1;
+};
+CorrectRank correctRankUpToSymmetry(const std::vector<Pose2>& hypotheses, const Pose2& truth);
 /// Error against whichever of ground truth and its twin is nearer in position.
 PoseError symmetricPoseError(const Pose2& estimate, const Pose2& truth);
 /// DESIGN §5.3: closer to the mirrored truth than to the truth and > 0.5 m from the truth.

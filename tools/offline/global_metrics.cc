@@ -5,17 +5,6 @@
 #include "tools/offline/localization_evaluation.h"
 
 namespace houghloc {
-namespace {
-
-/// Rank of the first hypothesis correct up to symmetry; -1 when there is none.
-int firstCorrectRank(const std::vector<GaussianPose>& hypotheses, const Pose2& truth) {
-  for (size_t r = 0; r < hypotheses.size(); ++r) {
-    if (isCorrectUpToSymmetry(hypotheses[r].mean, truth)) return static_cast<int>(r);
-  }
-  return -1;
-}
-
-}  // namespace
 
 std::optional<GlobalMetrics> computeGlobalMetrics(const OfflineContext& context,
                                                   const std::vector<FrameEstimate>& estimates) {
@@ -30,17 +19,20 @@ std::optional<GlobalMetrics> computeGlobalMetrics(const OfflineContext& context,
     ++m.frames_scored;
     const std::vector<GaussianPose>& h = f.estimate ? f.estimate->hypotheses : kNone;
     hypotheses += static_cast<long>(h.size());
-    const int rank = firstCorrectRank(h, *f.truth);
+    std::vector<Pose2> poses;
+    for (const GaussianPose& g : h) poses.push_back(g.mean);
+    const CorrectRank correct = correctRankUpToSymmetry(poses, *f.truth);
+    const int rank = correct.answer;  // top two and the mean rank count distinct answers
     all_any += rank >= 0;
-    all_best += rank == 0;
+    all_best += correct.index == 0;
     if (f.view == FrameView::kTwoDirections) {
       ++m.frames_two_directions;
       if (rank >= 0) {
         ++any;
         top2 += rank <= 1;
-        best += rank == 0;
+        best += correct.index == 0;
         rank_sum += rank;
-        const PoseError e = symmetricPoseError(h[static_cast<size_t>(rank)].mean, *f.truth);
+        const PoseError e = symmetricPoseError(poses[static_cast<size_t>(correct.index)], *f.truth);
         position_errors.push_back(e.position_m);
         heading_errors.push_back(e.heading_rad * 180.0 / M_PI);
       }

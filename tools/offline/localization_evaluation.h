@@ -17,12 +17,14 @@ namespace houghloc {
 /// here accepts the point-symmetric twin of ground truth. docs/metrics.md defines each key.
 /// A rate whose denominator is zero is 0 here and null in JSON.
 struct GlobalMetrics {
-  int frames_scored = 0;           ///< frames with ground truth
-  int frames_two_directions = 0;   ///< of those, with two directions (or the circle) in view
-  double correct_any_rate = 0.0;   ///< two-direction frames: a hypothesis correct up to symmetry
-  double correct_top2_rate = 0.0;  ///< same, among the two best
+  int frames_scored = 0;          ///< frames with ground truth
+  int frames_two_directions = 0;  ///< of those, with two directions (or the circle) in view
+  double correct_any_rate = 0.0;  ///< two-direction frames: a hypothesis correct up to symmetry
+  /// Same, among the two best distinct answers (a twin shares its pair's rank, CorrectRank).
+  double correct_top2_rate = 0.0;
   double correct_best_rate = 0.0;  ///< same, rank 0
-  double mean_correct_rank = 0.0;  ///< rank (0 = best) of the first correct hypothesis, where any
+  /// Rank among distinct answers (0 = best) of the first correct hypothesis, where any.
+  double mean_correct_rank = 0.0;
   double median_position_error_m = 0.0;  ///< of the first correct hypothesis, m
   double median_heading_error_deg = 0.0;
   double parallel_only_within_3sigma = 0.0;  ///< frames with one direction: truth within 3 sigma

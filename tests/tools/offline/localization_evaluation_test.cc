@@ -199,6 +199,26 @@ TEST(TrackingMetrics, ErrorsRatesFlipsExclusionAndRecovery) {
   EXPECT_FALSE(computeTrackingMetrics(c, estimates));
 }
 
+TEST(CorrectRank, ATwinOrANearCopySharesTheRankOfItsPair) {
+  const Pose2 truth(1.0, 0.8, 0.3);
+  const Pose2 wrong(-3.0, 2.0, 1.0);
+  const Pose2 near_wrong(-3.05, 2.0, 1.0);  // within 0.10 m / 3 deg of the wrong pose
+  const Pose2 other(2.5, -1.0, 0.2);
+  CorrectRank r = correctRankUpToSymmetry({wrong, mirrored(wrong), truth}, truth);
+  EXPECT_EQ(r.index, 2);
+  EXPECT_EQ(r.answer, 1);  // in the top two
+  r = correctRankUpToSymmetry({wrong, near_wrong, other, mirrored(truth)}, truth);
+  EXPECT_EQ(r.index, 3);
+  EXPECT_EQ(r.answer, 2);
+  r = correctRankUpToSymmetry({mirrored(truth), truth}, truth);
+  EXPECT_EQ(r.index, 0);
+  EXPECT_EQ(r.answer, 0);
+  r = correctRankUpToSymmetry({wrong, other}, truth);
+  EXPECT_EQ(r.index, -1);
+  EXPECT_EQ(r.answer, -1);
+  EXPECT_EQ(correctRankUpToSymmetry({}, truth).index, -1);
+}
+
 // Ten frames: 0-5 with two directions, 6-7 parallel only, 8-9 without lines, 10 without ground
 // truth within 20 ms.
 TEST(GlobalMetrics, RatesRanksErrorsAndParallelOnly) {
@@ -217,7 +237,9 @@ TEST(GlobalMetrics, RatesRanksErrorsAndParallelOnly) {
   std::vector<FrameEstimate> e;
   e.push_back(estimate(t(0), "TRACKING", {off(0, 0.01, 0.5), far}));
   e.push_back(estimate(t(1), "AMBIGUOUS", {far, mirrored(off(1, 0.02, 1.0))}));
-  e.push_back(estimate(t(2), "AMBIGUOUS", {far, far, off(2, -0.03, -1.5)}));
+  // The twin of a wrong pose is the same answer: the correct pose, fourth in the list, ranks 2.
+  const Pose2 other(2.5, -1.0, 0.2);
+  e.push_back(estimate(t(2), "AMBIGUOUS", {far, mirrored(far), other, off(2, -0.03, -1.5)}));
   e.push_back(estimate(t(3), "AMBIGUOUS", {far, off(3, 0.2, 0.0)}));
   e.push_back(estimate(t(4), "LOST", {}));
   e.push_back(estimate(t(5), "TRACKING", {off(5, 0.05, 2.0)}));
@@ -251,7 +273,7 @@ TEST(GlobalMetrics, RatesRanksErrorsAndParallelOnly) {
   EXPECT_DOUBLE_EQ(m->parallel_only_within_3sigma, 0.5);
   EXPECT_DOUBLE_EQ(m->all_frames_correct_any_rate, 0.4);
   EXPECT_DOUBLE_EQ(m->all_frames_correct_best_rate, 0.2);
-  EXPECT_DOUBLE_EQ(m->mean_hypotheses, 12.0 / 10.0);  // 2+2+3+2+0+1+1+1+0+0
+  EXPECT_DOUBLE_EQ(m->mean_hypotheses, 13.0 / 10.0);  // 2+2+4+2+0+1+1+1+0+0
 
   const nlohmann::json j = toJson(*m);
   EXPECT_EQ(j["frames_two_directions"], 6);
