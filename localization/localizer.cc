@@ -56,19 +56,29 @@ bool pointSymmetric(const FieldModel& field) {
   return segments && arcs && marks;
 }
 
-/// On a point-symmetric map the global localizer lists each pair of twins once when it has more
-/// candidates than slots, so a pose can come without its twin; both explain the frame equally
-/// well, so the missing twin is added with the same weight and the tracker's belief decides.
-void addMissingTwins(const TrackerConfig& config, std::vector<GaussianPose>* poses) {
-  const size_t found = poses->size();
+/// On a point-symmetric map both twins of a hypothesis explain the frame equally well, but the
+/// global localizer's list need not hold both: it lists each twin pair once when it has more
+/// candidates than slots, and a 1-D hypothesis may stem from a candidate whose twin was pruned.
+/// Each missing twin is added with the same weight and kind, so both halves of the field carry
+/// the same likelihood and the tracker's belief alone decides between them. The kind counts: a
+/// full pose next to a 1-D hypothesis does not stand for the 1-D one (it would leave one half
+/// with two hypotheses and the other with one).
+void addMissingTwins(const TrackerConfig& config, std::vector<PoseHypothesis>* hypotheses) {
+  const size_t found = hypotheses->size();
   for (size_t k = 0; k < found; ++k) {
-    const GaussianPose twin = mirrored((*poses)[k]);
-    const bool listed = std::any_of(poses->begin(), poses->end(), [&](const GaussianPose& p) {
-      return (p.mean.translation() - twin.mean.translation()).norm() <= config.mirror_tolerance_m &&
-             std::abs(angleDifference(p.mean.theta, twin.mean.theta)) <=
+    PoseHypothesis twin = (*hypotheses)[k];
+    twin.field_T_robot = mirrored(twin.field_T_robot);
+    twin.covariance = mirroredCovariance(twin.covariance);
+    twin.line_direction = -twin.line_direction;
+    const bool listed = std::any_of(hypotheses->begin(), hypotheses->end(), [&](const auto& h) {
+      const Pose2& p = h.field_T_robot;
+      return h.kind == twin.kind &&
+             (p.translation() - twin.field_T_robot.translation()).norm() <=
+                 config.mirror_tolerance_m &&
+             std::abs(angleDifference(p.theta, twin.field_T_robot.theta)) <=
                  config.mirror_tolerance_rad;
     });
-    if (!listed) poses->push_back(twin);
+    if (!listed) hypotheses->push_back(twin);
   }
 }
 
@@ -162,13 +172,13 @@ LocalizationEstimate Localizer::process(std::int64_t t_us, const std::optional<P
   double global_ms = 0.0;
   if (!fallen_ && (global_frames_pending_ > 0 || tracker_.needsGlobalHypotheses())) {
     const auto global_start = std::chrono::steady_clock::now();
-    const std::vector<PoseHypothesis> found = global_->locate(usable_points);
+    std::vector<PoseHypothesis> found = global_->locate(usable_points);
     global_ms = millisecondsSince(global_start);
     global_ran = true;
     // The tracker weighs them by its belief (the pre-fall pose inflated by the fall's unknown
     // motion after getting up): that tells the field's mirror twins apart.
+    if (point_symmetric_) addMissingTwins(config_.tracker, &found);
     std::vector<GaussianPose> poses = toGaussianPoses(found, static_cast<int>(found.size()));
-    if (point_symmetric_) addMissingTwins(config_.tracker, &poses);
     keepMostProbable(tracker_, config_.max_injected_hypotheses, &poses);
     if (!poses.empty()) {
       const auto inject_start = std::chrono::steady_clock::now();
