@@ -48,10 +48,12 @@ bool GlobalHoughLocalizer::parallelOnlyFrame(const std::vector<PoseHypothesis>& 
     }
   }
   if (best_parallel == -1e300) return false;
-  if (best_full == nullptr || best_full->score <= best_parallel) return true;
+  if (best_full == nullptr) return true;
   if (best_parallel < config_.parallel_only_share * best_full->score) return false;
-  // A full pose about as good as the best 1-D one: a second direction is in view only if clearly
-  // more than the few points that made it observable lie across the lines.
+  // A full pose about as good as the best 1-D one, or a little worse: free along its lines, a
+  // 1-D hypothesis at the same place fits the same points a fraction of a point better. A second
+  // direction is in view only if clearly more than the few points that made the full pose
+  // observable lie across the lines.
   RefinementConfig none = config_.refinement;
   none.iterations = 0;
   const RefinementResult r = refinePose(points, best_full->field_T_robot, map_, none);
