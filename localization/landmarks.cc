@@ -45,14 +45,20 @@ std::optional<CircleObservation> fitCircle(const WeightedPoints& points, double 
   // The vote only needs to land in the right cell: an even subsample of the points is enough
   // (Gauss-Newton below uses all of them).
   const std::size_t stride = std::max<std::size_t>(1, points.size() / kMaxVotingPoints);
+  // The best cell's count is kept in a register: comparing against votes[best] in memory would
+  // chain every vote to the previous one through a store and a load.
   int best = -1;
+  float best_votes = 0.0f;
   for (std::size_t i = 0; i < points.size(); i += stride) {
     const Eigen::Vector2d p = (points.points[i] - lo) / cell;
     const float w = static_cast<float>(points.weights[i]);
     for (const auto& r : ring) {
       const int idx = static_cast<int>(p.y() + r.y()) * cols + static_cast<int>(p.x() + r.x());
-      votes[idx] += w;
-      if (best < 0 || votes[idx] > votes[best]) best = idx;
+      const float v = votes[idx] += w;
+      if (best < 0 || v > best_votes) {
+        best = idx;
+        best_votes = v;
+      }
     }
   }
   Eigen::Vector2d centre = lo + cell * Eigen::Vector2d(best % cols + 0.5, best / cols + 0.5);
