@@ -78,7 +78,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
 
 std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
     const PoseHypothesis& candidate, const WeightedPoints& points,
-    const VisibilityEvidence& evidence) const {
+    const VisibilityEvidence& evidence, double min_positive) const {
   const Eigen::Vector2d u = candidate.line_direction;
   const Eigen::Vector2d t0 = candidate.field_T_robot.translation();
   const double theta = candidate.field_T_robot.theta;
@@ -89,8 +89,9 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
   }
   // Scan along the lines: where the points fit the segments and no line is missing.
   const double step = config_.line_scan_step_m;
-  const AlongLineScan scan = scanAlongLine(
-      candidate, subsamplePoints(points, config_.prescore_points), evidence, s_min, s_max);
+  const AlongLineScan scan =
+      scanAlongLine(candidate, subsamplePoints(points, config_.prescore_points), evidence, s_min,
+                    s_max, min_positive);
   if (!scan.fit.found) return {};
   const AlongLineFit& fit = scan.fit;
   const std::vector<double>& s_values = scan.s_values;
@@ -120,7 +121,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
 
 GlobalHoughLocalizer::AlongLineScan GlobalHoughLocalizer::scanAlongLine(
     const PoseHypothesis& candidate, const WeightedPoints& few, const VisibilityEvidence& evidence,
-    double s_min, double s_max) const {
+    double s_min, double s_max, double min_positive) const {
   const Eigen::Vector2d u = candidate.line_direction;
   const Eigen::Vector2d t0 = candidate.field_T_robot.translation();
   const double theta = candidate.field_T_robot.theta;
@@ -144,6 +145,7 @@ GlobalHoughLocalizer::AlongLineScan GlobalHoughLocalizer::scanAlongLine(
   }
   const std::vector<double> coarse_scores =
       scoreAlongLine(few, theta, t0, u, coarse_s, map_.grid(), config_.scoring);
+  if (*std::max_element(coarse_scores.begin(), coarse_scores.end()) < min_positive) return scan;
   std::vector<double> coarse_upper = coarse_scores;
   std::vector<char> coarse_exact(coarse_s.size(), 0);
   const AlongLineFit coarse =

@@ -97,9 +97,13 @@ class GlobalHoughLocalizer {
   std::vector<PoseHypothesis> selectHypotheses(LocateState& s) const;
 
   // Parts of the stages.
+  /// The candidate's line scanned and the 1-D hypothesis placed on it; none when the line has
+  /// no place where the points fit, or when no coarse position's positive score (an upper bound
+  /// of its score) reaches `min_positive`.
   std::vector<PoseHypothesis> placeAlongLines(const PoseHypothesis& candidate,
                                               const WeightedPoints& points,
-                                              const VisibilityEvidence& evidence) const;
+                                              const VisibilityEvidence& evidence,
+                                              double min_positive = -1e300) const;
   /// Of a scan along the lines: the best score (positive less negative evidence) and the first
   /// and last positions (indices) whose score is within line_scan_tolerance of it.
   struct AlongLineFit {
@@ -116,9 +120,11 @@ class GlobalHoughLocalizer {
   };
   /// The scan over [s_min, s_max] in line_scan_step_m steps, coarse to fine: every other
   /// position, then the ones between next to the best and at the ends of the span where the
-  /// points fit. `few`: the points subsampled for scoring.
+  /// points fit. `few`: the points subsampled for scoring. Stops after the coarse positions
+  /// (fit not found) when none has a positive score of `min_positive`.
   AlongLineScan scanAlongLine(const PoseHypothesis& candidate, const WeightedPoints& few,
-                              const VisibilityEvidence& evidence, double s_min, double s_max) const;
+                              const VisibilityEvidence& evidence, double s_min, double s_max,
+                              double min_positive) const;
   /// The fit of the scan at s_values along candidate's line_direction from its translation, with
   /// `positive` the positive score at each position; the negative evidence only where needed.
   /// `upper` holds an upper bound of each position's score (at first `positive`), or the score
@@ -134,10 +140,12 @@ class GlobalHoughLocalizer {
                          const WeightedPoints& points) const;
   /// Parallel-only frames: every 1-D line candidate (all map lines of the seen direction, every
   /// heading) placed along its line by the scan; one of each pair of point-symmetric twins is
-  /// scanned and the other mirrored.
+  /// scanned and the other mirrored. A line whose coarse scan stays below the pruning share
+  /// (min_relative_score) of `best_score` is left out, as pruning leaves out such a candidate.
   std::vector<PoseHypothesis> everyLineHypotheses(const std::vector<PoseHypothesis>& lines,
                                                   const WeightedPoints& points,
-                                                  const VisibilityEvidence& evidence) const;
+                                                  const VisibilityEvidence& evidence,
+                                                  double best_score) const;
   void finish(PoseHypothesis& candidate, const WeightedPoints& points,
               const VisibilityEvidence& evidence) const;
   bool onCarpet(const Pose2& pose) const;

@@ -2,6 +2,7 @@
 // Gaussian leaves open which map line was seen, so every map line of the seen direction is tried,
 // each placed along its line by the scan of placeAlongLines().
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 #include "localization/gaussian_pose.h"
@@ -26,7 +27,10 @@ void GlobalHoughLocalizer::addEveryLine(LocateState& s) const {
   // A new 1-D hypothesis replaces a weaker one on the same line; a full pose near its mean
   // stays (it says where along the line).
   const HypothesisSetConfig all = uncapped();
-  for (PoseHypothesis& h : mergeDuplicates(everyLineHypotheses(s.lines, s.fine, s.evidence), all)) {
+  double best = -1e300;
+  for (const PoseHypothesis& m : s.merged) best = std::max(best, m.score);
+  for (PoseHypothesis& h :
+       mergeDuplicates(everyLineHypotheses(s.lines, s.fine, s.evidence, best), all)) {
     bool known = false;
     for (PoseHypothesis& m : s.merged) {
       if (known || m.kind != HypothesisKind::kParallel || !sameHypothesis(m, h, all)) continue;
@@ -63,8 +67,12 @@ bool GlobalHoughLocalizer::parallelOnlyFrame(const std::vector<PoseHypothesis>& 
 
 std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
     const std::vector<PoseHypothesis>& lines, const WeightedPoints& points,
-    const VisibilityEvidence& evidence) const {
+    const VisibilityEvidence& evidence, double best_score) const {
   const bool symmetric = map_.pointSymmetric();
+  // A line that cannot reach the share of the best score that pruning keeps of the candidates
+  // would end with no weight: its coarse positive scores bound its score from above.
+  const double min_positive =
+      best_score > 0.0 ? config_.pruning.min_relative_score * best_score : -1e300;
   auto sameLine = [](const PoseHypothesis& a, const Pose2& b) {
     const Eigen::Vector2d d = b.translation() - a.field_T_robot.translation();
     const Eigen::Vector2d& u = a.line_direction;
@@ -80,7 +88,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
     }
     if (done) continue;
     scanned.push_back(line);
-    for (const PoseHypothesis& h : placeAlongLines(line, points, evidence)) {
+    for (const PoseHypothesis& h : placeAlongLines(line, points, evidence, min_positive)) {
       out.push_back(h);
       if (!symmetric) continue;
       PoseHypothesis twin = h;  // the map is point-symmetric: the twin scores the same
