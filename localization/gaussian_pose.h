@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "field_models/pose2.h"
+#include "localization/pose_hypothesis.h"
 
 namespace houghloc {
 
@@ -35,6 +36,15 @@ inline GaussianPose mirrored(const GaussianPose& pose) {
   GaussianPose out = pose;
   out.mean = mirrored(pose.mean);
   out.covariance = mirroredCovariance(pose.covariance);
+  return out;
+}
+
+/// Mirror of a global hypothesis: pose, covariance and the direction along its lines.
+inline PoseHypothesis mirrored(const PoseHypothesis& hypothesis) {
+  PoseHypothesis out = hypothesis;
+  out.field_T_robot = mirrored(hypothesis.field_T_robot);
+  out.covariance = mirroredCovariance(hypothesis.covariance);
+  out.line_direction = -hypothesis.line_direction;
   return out;
 }
 

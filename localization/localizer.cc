@@ -66,19 +66,13 @@ bool pointSymmetric(const FieldModel& field) {
 void addMissingTwins(const TrackerConfig& config, std::vector<PoseHypothesis>* hypotheses) {
   const size_t found = hypotheses->size();
   for (size_t k = 0; k < found; ++k) {
-    PoseHypothesis twin = (*hypotheses)[k];
-    twin.field_T_robot = mirrored(twin.field_T_robot);
-    twin.covariance = mirroredCovariance(twin.covariance);
-    twin.line_direction = -twin.line_direction;
+    const PoseHypothesis& original = (*hypotheses)[k];
     const bool listed = std::any_of(hypotheses->begin(), hypotheses->end(), [&](const auto& h) {
-      const Pose2& p = h.field_T_robot;
-      return h.kind == twin.kind &&
-             (p.translation() - twin.field_T_robot.translation()).norm() <=
-                 config.mirror_tolerance_m &&
-             std::abs(angleDifference(p.theta, twin.field_T_robot.theta)) <=
-                 config.mirror_tolerance_rad;
+      return h.kind == original.kind &&
+             areMirrors(original.field_T_robot, h.field_T_robot, config.mirror_tolerance_m,
+                        config.mirror_tolerance_rad);
     });
-    if (!listed) hypotheses->push_back(twin);
+    if (!listed) hypotheses->push_back(mirrored(original));
   }
 }
 

@@ -91,11 +91,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
     for (const PoseHypothesis& h : placeAlongLines(line, points, evidence, min_positive)) {
       out.push_back(h);
       if (!symmetric) continue;
-      PoseHypothesis twin = h;  // the map is point-symmetric: the twin scores the same
-      twin.field_T_robot = mirrored(h.field_T_robot);
-      twin.line_direction = -h.line_direction;
-      twin.covariance = mirroredCovariance(h.covariance);
-      out.push_back(twin);
+      out.push_back(mirrored(h));  // the map is point-symmetric: the twin scores the same
     }
   }
   return out;
