@@ -56,11 +56,25 @@ WeightedPoints sampleMapLines(const FieldModel& field, double spacing_m, bool in
 }
 
 std::vector<double> orientationProfile(const HoughTransform& transform) {
-  std::vector<double> h(transform.numTheta(), 0.0);
-  for (int i = 0; i < transform.numTheta(); ++i) {
+  const int columns = transform.numTheta(), rows = transform.numRho();
+  std::vector<double> h(columns, 0.0);
+  // Each column's sum of squares in row order; four columns side by side, so that four
+  // independent sums hide the latency of the additions.
+  constexpr int kSide = 4;
+  int i = 0;
+  for (; i + kSide <= columns; i += kSide) {
+    const float* col[kSide];
+    double sum[kSide] = {0.0, 0.0, 0.0, 0.0};
+    for (int c = 0; c < kSide; ++c) col[c] = transform.column(i + c);
+    for (int j = 0; j < rows; ++j) {
+      for (int c = 0; c < kSide; ++c) sum[c] += static_cast<double>(col[c][j]) * col[c][j];
+    }
+    for (int c = 0; c < kSide; ++c) h[i + c] = sum[c];
+  }
+  for (; i < columns; ++i) {
     const float* col = transform.column(i);
     double sum = 0.0;
-    for (int j = 0; j < transform.numRho(); ++j) sum += static_cast<double>(col[j]) * col[j];
+    for (int j = 0; j < rows; ++j) sum += static_cast<double>(col[j]) * col[j];
     h[i] = sum;
   }
   double mean = 0.0;

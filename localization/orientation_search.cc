@@ -10,14 +10,16 @@ namespace houghloc {
 std::vector<double> circularCorrelation(const std::vector<double>& h,
                                         const std::vector<double>& m) {
   const int n = static_cast<int>(std::min(h.size(), m.size()));
+  // c[k] = sum_i h[i] m[(i + k) mod n], summed over i in order. Term i of every shift at once,
+  // over m written out twice (no wrap inside the loop), which the compiler vectorises.
+  std::vector<double> twice(m.begin(), m.begin() + n);
+  twice.insert(twice.end(), m.begin(), m.begin() + n);
   std::vector<double> c(n, 0.0);
-  for (int k = 0; k < n; ++k) {
-    double sum = 0.0;
-    for (int i = 0; i < n; ++i) {
-      const int j = i + k < n ? i + k : i + k - n;
-      sum += h[i] * m[j];
-    }
-    c[k] = sum;
+  double* out = c.data();
+  for (int i = 0; i < n; ++i) {
+    const double hi = h[i];
+    const double* shifted = twice.data() + i;
+    for (int k = 0; k < n; ++k) out[k] += hi * shifted[k];
   }
   return c;
 }
