@@ -14,6 +14,7 @@
 #include "localization/field_edge_evidence.h"
 #include "localization/hough_transform.h"
 #include "localization/map_signature.h"
+#include "localization/orientation_search.h"
 #include "localization/pose_refinement.h"
 #include "localization/pose_scoring.h"
 
@@ -331,6 +332,57 @@ TEST(FastHoughTest, AddPointsEqualsAddPointOneByOne) {
   for (int c = 0; c < batch.numTheta(); ++c) {
     for (int r = 0; r < batch.numRho(); ++r)
       ASSERT_EQ(batch.at(c, r), single.at(c, r)) << c << " " << r;
+  }
+}
+
+// Step 2's sums, written for speed (all shifts term by term; four columns side by side), against
+// the plain loops: the same terms in the same order, so the same bits. 179 columns leave a
+// remainder after the groups of four.
+TEST(FastHoughTest, OrientationSumsEqualThePlainLoops) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-4.0, 4.0);
+  WeightedPoints points;
+  for (int i = 0; i < 300; ++i) {
+    const double t = u(rng);  // two lines and clutter
+    points.points.push_back(i % 3 == 0   ? Eigen::Vector2d(t, 1.5)
+                            : i % 3 == 1 ? Eigen::Vector2d(2.0, t)
+                                         : Eigen::Vector2d(u(rng), u(rng)));
+    points.weights.push_back(0.2 + std::abs(u(rng)));
+  }
+  for (int columns : {180, 179}) {
+    HoughTransform transform(HoughConfig{M_PI / columns, 0.03}, 6.0);
+    transform.addPoints(points);
+    ASSERT_EQ(transform.numTheta(), columns);
+    std::vector<double> plain(columns);
+    for (int c = 0; c < columns; ++c) {
+      double sum = 0.0;
+      for (int r = 0; r < transform.numRho(); ++r) {
+        sum += static_cast<double>(transform.at(c, r)) * transform.at(c, r);
+      }
+      plain[c] = sum;
+    }
+    // orientationProfile then centres and scales: do the same to the plain sums.
+    double mean = 0.0, norm = 0.0;
+    for (double v : plain) mean += v;
+    mean /= columns;
+    for (double& v : plain) {
+      v -= mean;
+      norm += v * v;
+    }
+    for (double& v : plain) v /= std::sqrt(norm);
+    const std::vector<double> profile = orientationProfile(transform);
+    ASSERT_EQ(profile.size(), plain.size());
+    for (int c = 0; c < columns; ++c) ASSERT_EQ(profile[c], plain[c]) << c;  // bit for bit
+
+    std::vector<double> m(columns);
+    for (double& v : m) v = u(rng);
+    const std::vector<double> fast = circularCorrelation(profile, m);
+    ASSERT_EQ(fast.size(), m.size());
+    for (int k = 0; k < columns; ++k) {
+      double sum = 0.0;
+      for (int i = 0; i < columns; ++i) sum += profile[i] * m[(i + k) % columns];
+      ASSERT_EQ(fast[k], sum) << k;
+    }
   }
 }
 
