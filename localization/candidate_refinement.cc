@@ -45,7 +45,7 @@ void GlobalHoughLocalizer::refineSurvivors(LocateState& s) const {
 
 std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
     const PoseHypothesis& candidate, const WeightedPoints& points,
-    const VisibilityEvidence& evidence, int* line_scans) const {
+    const VisibilityEvidence& evidence, LineScans* scans) const {
   PoseHypothesis h = candidate;
   const bool was_parallel = h.kind == HypothesisKind::kParallel;
   const Eigen::Vector2d frozen = was_parallel ? h.line_direction : Eigen::Vector2d::Zero();
@@ -59,15 +59,18 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
   if (observed && was_parallel) {
     r = refinePose(points, r.field_T_robot, map_, config_.refinement);
   }
-  if (!observed && *line_scans >= config_.max_line_scans) return {};
   h.field_T_robot = r.field_T_robot;
   h.covariance = r.covariance;
   h.rms_m = r.rms_m;
   if (!observed) {
-    // Only parallel lines constrain the position: the paper's case M = 1.
+    // Only parallel lines constrain the position: the paper's case M = 1. The scan runs along
+    // the whole line, so a survivor on a line scanned before (survivors converge to many places
+    // on one line) would find the same hypothesis again.
     h.kind = HypothesisKind::kParallel;
     h.line_direction = eig.eigenvectors().col(0).normalized();
-    ++*line_scans;
+    if (scans->count >= config_.max_line_scans || lineScanned(scans->lines, h, false)) return {};
+    ++scans->count;
+    scans->lines.push_back(h);
     return placeAlongLines(h, points, evidence);
   }
   h.kind = HypothesisKind::kFull;

@@ -48,13 +48,17 @@ class GlobalHoughLocalizer {
   /// Step 4 refinement of one survivor (after the coarse iterations of converge()):
   /// Gauss-Newton, observability (kParallel when only parallel lines constrain it; then a scan
   /// along the lines places the mean), covariance, final score including negative evidence.
-  /// A kParallel candidate can come back as several hypotheses, one per stretch of the lines
-  /// where the points fit equally well; `line_scans` counts those scans (at most
-  /// config.max_line_scans per frame, further parallel-only candidates are dropped).
+  /// A kParallel candidate comes back placed on its line (or not at all when the points fit
+  /// nowhere along it, when its line was scanned before, or when config.max_line_scans lines
+  /// were scanned in this frame); `scans` records the lines scanned.
+  struct LineScans {
+    int count = 0;                      ///< scans so far (at most config.max_line_scans)
+    std::vector<PoseHypothesis> lines;  ///< the kParallel candidates scanned, one per line
+  };
   std::vector<PoseHypothesis> refineCandidate(const PoseHypothesis& candidate,
                                               const WeightedPoints& points,
                                               const VisibilityEvidence& evidence,
-                                              int* line_scans) const;
+                                              LineScans* scans) const;
 
  private:
   /// What the stages of locate() hand on to each other (global_locate_state.h).
@@ -146,6 +150,10 @@ class GlobalHoughLocalizer {
                                                   const WeightedPoints& points,
                                                   const VisibilityEvidence& evidence,
                                                   double best_score) const;
+  /// True when `line` (a kParallel candidate) lies on a line of `scanned`, or on a twin of one
+  /// when `mirrors` (a point-symmetric map): same heading, same offset across the lines.
+  bool lineScanned(const std::vector<PoseHypothesis>& scanned, const PoseHypothesis& line,
+                   bool mirrors) const;
   void finish(PoseHypothesis& candidate, const WeightedPoints& points,
               const VisibilityEvidence& evidence) const;
   bool onCarpet(const Pose2& pose) const;

@@ -27,7 +27,7 @@ struct GlobalHoughLocalizer::LocateState {
   std::vector<PoseHypothesis> lines;         ///< every 1-D line candidate of step 4
   std::vector<PoseHypothesis> refined;       ///< refineSurvivors() output, unmerged
   std::vector<PoseHypothesis> merged;        ///< distinct hypotheses, full and 1-D
-  int line_scans = 0;                        ///< scans along lines so far (max_line_scans)
+  LineScans line_scans;                      ///< the survivors' scans along lines
 };
 
 }  // namespace houghloc

@@ -41,6 +41,21 @@ void GlobalHoughLocalizer::addEveryLine(LocateState& s) const {
   }
 }
 
+bool GlobalHoughLocalizer::lineScanned(const std::vector<PoseHypothesis>& scanned,
+                                       const PoseHypothesis& line, bool mirrors) const {
+  auto sameLine = [](const PoseHypothesis& a, const Pose2& b) {
+    const Eigen::Vector2d d = b.translation() - a.field_T_robot.translation();
+    const Eigen::Vector2d& u = a.line_direction;
+    return std::abs(angleDifference(a.field_T_robot.theta, b.theta)) < kSameLineRad &&
+           std::abs(d.x() * u.y() - d.y() * u.x()) < kSameLineM;
+  };
+  const Pose2& p = line.field_T_robot;
+  for (const PoseHypothesis& s : scanned) {
+    if (sameLine(s, p) || (mirrors && sameLine(s, mirrored(p)))) return true;
+  }
+  return false;
+}
+
 bool GlobalHoughLocalizer::parallelOnlyFrame(const std::vector<PoseHypothesis>& refined,
                                              const WeightedPoints& points) const {
   const PoseHypothesis* best_full = nullptr;
@@ -73,20 +88,9 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
   // would end with no weight: its coarse positive scores bound its score from above.
   const double min_positive =
       best_score > 0.0 ? config_.pruning.min_relative_score * best_score : -1e300;
-  auto sameLine = [](const PoseHypothesis& a, const Pose2& b) {
-    const Eigen::Vector2d d = b.translation() - a.field_T_robot.translation();
-    const Eigen::Vector2d& u = a.line_direction;
-    return std::abs(angleDifference(a.field_T_robot.theta, b.theta)) < kSameLineRad &&
-           std::abs(d.x() * u.y() - d.y() * u.x()) < kSameLineM;
-  };
   std::vector<PoseHypothesis> scanned, out;
   for (const PoseHypothesis& line : lines) {
-    bool done = false;
-    for (const PoseHypothesis& s : scanned) {
-      const Pose2& p = line.field_T_robot;
-      done = done || sameLine(s, p) || (symmetric && sameLine(s, mirrored(p)));
-    }
-    if (done) continue;
+    if (lineScanned(scanned, line, symmetric)) continue;
     scanned.push_back(line);
     for (const PoseHypothesis& h : placeAlongLines(line, points, evidence, min_positive)) {
       out.push_back(h);
