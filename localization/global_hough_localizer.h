@@ -145,8 +145,10 @@ class GlobalHoughLocalizer {
   /// Parallel-only frames: every 1-D line candidate (all map lines of the seen direction, every
   /// heading) placed along its line by the scan; one of each pair of point-symmetric twins is
   /// scanned and the other mirrored. A line whose coarse scan stays below the pruning share
-  /// (min_relative_score) of `best_score` is left out, as pruning leaves out such a candidate.
+  /// (min_relative_score) of `best_score` is left out, as pruning leaves out such a candidate,
+  /// and so is a line of `placed` (a survivor's, already among the hypotheses).
   std::vector<PoseHypothesis> everyLineHypotheses(const std::vector<PoseHypothesis>& lines,
+                                                  const std::vector<PoseHypothesis>& placed,
                                                   const WeightedPoints& points,
                                                   const VisibilityEvidence& evidence,
                                                   double best_score) const;

@@ -29,8 +29,8 @@ void GlobalHoughLocalizer::addEveryLine(LocateState& s) const {
   const HypothesisSetConfig all = uncapped();
   double best = -1e300;
   for (const PoseHypothesis& m : s.merged) best = std::max(best, m.score);
-  for (PoseHypothesis& h :
-       mergeDuplicates(everyLineHypotheses(s.lines, s.fine, s.evidence, best), all)) {
+  for (PoseHypothesis& h : mergeDuplicates(
+           everyLineHypotheses(s.lines, s.line_scans.lines, s.fine, s.evidence, best), all)) {
     bool known = false;
     for (PoseHypothesis& m : s.merged) {
       if (known || m.kind != HypothesisKind::kParallel || !sameHypothesis(m, h, all)) continue;
@@ -81,8 +81,8 @@ bool GlobalHoughLocalizer::parallelOnlyFrame(const std::vector<PoseHypothesis>& 
 }
 
 std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
-    const std::vector<PoseHypothesis>& lines, const WeightedPoints& points,
-    const VisibilityEvidence& evidence, double best_score) const {
+    const std::vector<PoseHypothesis>& lines, const std::vector<PoseHypothesis>& placed,
+    const WeightedPoints& points, const VisibilityEvidence& evidence, double best_score) const {
   const bool symmetric = map_.pointSymmetric();
   // A line that cannot reach the share of the best score that pruning keeps of the candidates
   // would end with no weight: its coarse positive scores bound its score from above.
@@ -90,7 +90,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
       best_score > 0.0 ? config_.pruning.min_relative_score * best_score : -1e300;
   std::vector<PoseHypothesis> scanned, out;
   for (const PoseHypothesis& line : lines) {
-    if (lineScanned(scanned, line, symmetric)) continue;
+    if (lineScanned(placed, line, false) || lineScanned(scanned, line, symmetric)) continue;
     scanned.push_back(line);
     for (const PoseHypothesis& h : placeAlongLines(line, points, evidence, min_positive)) {
       out.push_back(h);
