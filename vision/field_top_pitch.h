@@ -30,7 +30,12 @@ struct FieldTopPitchConfig {
                           ///< passes for turf some up) ...
   double border_depression_rad = 0.05;  ///< ... and this much more: the far border seen from a
                                         ///< 0.5 m camera 10 m away lies 2.9 deg below the horizon
-  double max_offset_rad = 0.52;         ///< at most +30 deg (a NAO head pitches 29.5 deg down)
+  double max_shortfall_rad = 0.115;  ///< the real pitch may exceed the bound by this much (a border
+                                     ///< 3 m from a 0.5 m camera lies 9.5 deg below the horizon,
+                                     ///< 6.6 deg more than assumed): a frame scanned with the bound
+                                     ///< accepts runs as wide as a line under the pitch plus this
+                                     ///< (lines are nearer and wider than the bound's pose says)
+  double max_offset_rad = 0.52;      ///< at most +30 deg (a NAO head pitches 29.5 deg down)
 };
 
 /// The camera pitch offset (rad, positive: further down, added to the pose's pitch) that puts

@@ -13,9 +13,14 @@ namespace {
 
 class SpotScanner {
  public:
-  SpotScanner(const FieldColor& color, const LineWidthModel& widths, const LineSpotConfig& config,
-              std::vector<LineSpot>* spots, LineSpotStats* stats)
-      : color_(color), widths_(widths), config_(config), spots_(spots), stats_(stats) {
+  SpotScanner(const FieldColor& color, const LineWidthModel& widths, const LineWidthModel* widest,
+              const LineSpotConfig& config, std::vector<LineSpot>* spots, LineSpotStats* stats)
+      : color_(color),
+        widths_(widths),
+        widest_(widest),
+        config_(config),
+        spots_(spots),
+        stats_(stats) {
     const double noise_sigma =
         std::min<double>(color.luma_sigma, config.max_sigma_over_texture * color.texture_sigma);
     threshold_ =
@@ -163,7 +168,12 @@ class SpotScanner {
     const float u = line.u0 + line.du * centre, v = line.v0 + line.dv * centre;
     const Eigen::Vector2f expected_xy = widths_.expectedPx(u, v);
     const float expected = line.dv != 0 ? expected_xy.y() : expected_xy.x();
-    switch (compareLineWidth(width, expected, config_)) {
+    float widest = 0.f;
+    if (widest_) {
+      const Eigen::Vector2f widest_xy = widest_->expectedPx(u, v);
+      widest = line.dv != 0 ? widest_xy.y() : widest_xy.x();
+    }
+    switch (compareLineWidth(width, expected, config_, widest)) {
       case WidthFit::kTooWide:
         reject(line, peak, SpotRejection::kTooWide, &LineSpotStats::too_wide);
         if (stats_ && stats_->too_wide_runs.size() < LineSpotStats::kMaxTooWideRuns) {
@@ -198,6 +208,7 @@ class SpotScanner {
 
   const FieldColor& color_;
   const LineWidthModel& widths_;
+  const LineWidthModel* widest_;  ///< none: the pose's pitch is taken as exact
   const LineSpotConfig& config_;
   std::vector<LineSpot>* spots_;
   LineSpotStats* stats_;
@@ -245,8 +256,10 @@ void scanGrid(const Pixels& pixels, const FieldBoundary& boundary, const ScanGri
 
 }  // namespace
 
-WidthFit compareLineWidth(double width_px, double expected_px, const LineSpotConfig& config) {
-  if (width_px > config.max_width_ratio * expected_px + config.width_tolerance_px) {
+WidthFit compareLineWidth(double width_px, double expected_px, const LineSpotConfig& config,
+                          double widest_px) {
+  const double widest = std::max(expected_px, widest_px);
+  if (width_px > config.max_width_ratio * widest + config.width_tolerance_px) {
     return WidthFit::kTooWide;
   }
   if (width_px < config.min_width_ratio * expected_px - 1.0 || expected_px <= 0.0) {
@@ -258,10 +271,10 @@ WidthFit compareLineWidth(double width_px, double expected_px, const LineSpotCon
 std::vector<LineSpot> detectLineSpots(const cv::Mat& image, const FieldColor& color,
                                       const FieldBoundary& boundary, const ScanGrid& grid,
                                       const LineWidthModel& widths, const LineSpotConfig& config,
-                                      LineSpotStats* stats) {
+                                      LineSpotStats* stats, const LineWidthModel* widest) {
   std::vector<LineSpot> spots;
   if (!color.valid || !boundary.found) return spots;
-  const SpotScanner scanner(color, widths, config, &spots, stats);
+  const SpotScanner scanner(color, widths, widest, config, &spots, stats);
   visitPixels(image, [&](const auto& pixels) { scanGrid(pixels, boundary, grid, scanner); });
   return spots;
 }

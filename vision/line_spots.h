@@ -93,7 +93,10 @@ struct LineSpot {
 /// How a run's width compares with the width a line has at its pixel (LineSpotConfig's width
 /// tests): the spot check and the width pitch fit (width_pitch.h) judge runs alike.
 enum class WidthFit { kLine, kTooWide, kTooNarrow };
-WidthFit compareLineWidth(double width_px, double expected_px, const LineSpotConfig& config);
+/// widest_px: when the pose's pitch is only a lower bound, the width a line has at that pixel
+/// under the steepest pitch admitted (too wide means wider than a line under either).
+WidthFit compareLineWidth(double width_px, double expected_px, const LineSpotConfig& config,
+                          double widest_px = 0.0);
 
 /// Why a candidate was rejected.
 enum class SpotRejection {
@@ -133,9 +136,12 @@ struct LineSpotStats {
 /// Scans the grid's rows and columns below the field boundary for bright, low-saturation runs with
 /// turf on both sides whose half-maximum width matches the expected line width there.
 /// image: BGR8 or YUYV (pixel_access.h); YUYV pixels are decoded per scanline.
+/// widest: for a pose whose pitch is a lower bound (field_top_pitch.h), the widths lines have
+/// under the steepest pitch it admits; a run is too wide only when wider than a line under both.
 std::vector<LineSpot> detectLineSpots(const cv::Mat& image, const FieldColor& color,
                                       const FieldBoundary& boundary, const ScanGrid& grid,
                                       const LineWidthModel& widths, const LineSpotConfig& config,
-                                      LineSpotStats* stats = nullptr);
+                                      LineSpotStats* stats = nullptr,
+                                      const LineWidthModel* widest = nullptr);
 
 }  // namespace houghloc

@@ -86,6 +86,7 @@ ConfigSection visionSection(VisionConfig& c) {
          HL_MEMBER(c.field_top_pitch, min_luma_ratio), HL_MEMBER(c.field_top_pitch, min_rise_rad),
          HL_MEMBER(c.field_top_pitch, min_share), HL_MEMBER(c.field_top_pitch, quantile),
          HL_MEMBER(c.field_top_pitch, border_depression_rad),
+         HL_MEMBER(c.field_top_pitch, max_shortfall_rad),
          HL_MEMBER(c.field_top_pitch, max_offset_rad)}}},
       {"pose_correction",
        {{HL_MEMBER(c.pose_correction, enabled),

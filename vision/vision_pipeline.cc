@@ -86,14 +86,30 @@ VisionResult VisionPipeline::process(const cv::Mat& image, const Pose3& robot_T_
   // with the pitch its image asks for. Such a rescan can leave the frame without spots but with
   // candidates whose widths tell the pitch, hence more than one.
   constexpr int kMaxPitchRescans = 3;
+  double shortfall = 0.0;  // how much steeper than the pose's pitch the camera may look (rad)
   for (int rescan = 0; rescan < kMaxPitchRescans && !formsLines(result.features); ++rescan) {
     const std::optional<PitchRequest> request = pitchTheImageAsksFor(image, result, start_rows);
     if (!request) break;
     addPitch(request->offset_rad, &recorded, &pose, &start_rows, &result);
     diag.spot_stats = LineSpotStats{};  // the new scan's
-    findSpots(image, start_rows, &result);
+    // The field top gives a lower bound on the pitch (field_top_pitch.h), the widths a fit.
+    const bool bound = request->diagnostic == &VisionDiagnostics::field_top_pitch_rad;
+    shortfall = bound ? config_.field_top_pitch.max_shortfall_rad : 0.0;
+    findSpots(image, start_rows, &result, shortfall);
     all_rays = fitFeatures(pose, &result);
     diag.*(request->diagnostic) += request->offset_rad;
+  }
+  // Lines found with a bound's pitch: their widths tell where in the shortfall the pitch lies
+  // (the points would otherwise lie too far by the shortfall's share of their depression).
+  if (shortfall > 0.0 && formsLines(result.features)) {
+    const double more = fitPitchAboveBound(camera_, result.spots, shortfall, config_.width_pitch);
+    if (more > 0.0) {
+      addPitch(more, &recorded, &pose, &start_rows, &result);
+      diag.spot_stats = LineSpotStats{};
+      findSpots(image, start_rows, &result, shortfall - more);
+      all_rays = fitFeatures(pose, &result);
+      diag.field_top_pitch_rad += more;
+    }
   }
   diag.num_spots = static_cast<int>(result.spots.size());
   diag.time_spots_ms += msSince(&step);  // the rescans
@@ -190,13 +206,20 @@ bool VisionPipeline::formsLines(const LineFeatures& features) {
 }
 
 void VisionPipeline::findSpots(const cv::Mat& image, const std::vector<int>& start_rows,
-                               VisionResult* result) const {
+                               VisionResult* result, double pitch_shortfall_rad) const {
   VisionDiagnostics& diag = result->diagnostics;
   result->boundary = detectFieldBoundary(image, diag.field_color, start_rows, config_.boundary);
   const LineWidthModel widths(camera_, config_.line_width_m, config_.line_width);
   const ScanGrid grid = makeScanGrid(camera_, widths, result->boundary, config_.scan_grid);
+  std::optional<LineWidthModel> widest;
+  if (pitch_shortfall_rad > 0.0) {
+    Pose3 steeper = camera_.pose();
+    steeper.pitch += pitch_shortfall_rad;
+    widest.emplace(CameraModel(camera_.intrinsics(), steeper, camera_.config()),
+                   config_.line_width_m, config_.line_width);
+  }
   result->spots = detectLineSpots(image, diag.field_color, result->boundary, grid, widths,
-                                  config_.spots, &diag.spot_stats);
+                                  config_.spots, &diag.spot_stats, widest ? &*widest : nullptr);
 }
 
 }  // namespace houghloc

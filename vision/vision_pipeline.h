@@ -63,7 +63,8 @@ struct VisionDiagnostics {
   int pose_correction_map_inliers = 0;  ///< this frame's points matched to the map (0: none)
   /// Pitch offsets (rad) the image of a frame without spots asked for, added to its recorded
   /// pose before a new scan (0: none): the widths of its too-wide candidates (width_pitch.h),
-  /// and its turf seen above the computed horizon (field_top_pitch.h).
+  /// and its turf seen above the computed horizon (field_top_pitch.h; plus what the widths of the
+  /// lines then found add within FieldTopPitchConfig::max_shortfall_rad).
   double width_pitch_rad = 0.0;
   double field_top_pitch_rad = 0.0;
   double time_total_ms = 0.0;
@@ -145,8 +146,10 @@ class VisionPipeline {
   static bool formsLines(const LineFeatures& features);
   /// Steps 3-4 with camera_'s pose and the frame's field colour: the field boundary below
   /// `start_rows`, the width model, the scan grid and the line spots, into `result`.
-  void findSpots(const cv::Mat& image, const std::vector<int>& start_rows,
-                 VisionResult* result) const;
+  /// pitch_shortfall_rad > 0: the pose's pitch is a lower bound that the real pitch may exceed by
+  /// this much; runs as wide as a line under the steeper pitch pass the width test.
+  void findSpots(const cv::Mat& image, const std::vector<int>& start_rows, VisionResult* result,
+                 double pitch_shortfall_rad = 0.0) const;
 
   VisionConfig config_;
   int camera_id_ = 0;

@@ -31,4 +31,12 @@ struct WidthPitchConfig {
 std::optional<double> fitPitchToWidths(const CameraModel& camera, const std::vector<LineSpot>& runs,
                                        const LineSpotConfig& spots, const WidthPitchConfig& config);
 
+/// For a pose whose pitch is only a lower bound (field_top_pitch.h): the offset in
+/// [0, max_offset_rad] (steps of config.step_rad) under which the accepted line spots' widths fit
+/// the widths a line has there best (least summed |log(width / expected)|). The range is what
+/// bounds it: over a wider one, blur (real widths run wider than the model) and robots' legs
+/// pulled such fits to +45 deg.
+double fitPitchAboveBound(const CameraModel& camera, const std::vector<LineSpot>& spots,
+                          double max_offset_rad, const WidthPitchConfig& config);
+
 }  // namespace houghloc

@@ -71,7 +71,9 @@ TEST_F(RealFramesTest, FramesShowingNoLineGiveFewPoints) {
   REQUIRE_REAL_DATA();
   // Labelled "no" in index.csv but showing lines: the goal line and the goal area's line run
   // under the goal at the top left (the first scan's horizon is below them; the field seen above
-  // it gives the pitch, field_top_pitch.h). Every point of it lies on them (overlay checked).
+  // it gives the pitch, field_top_pitch.h). 40 of its 57 points lie on them, 17 on the legs of a
+  // robot standing at the far border (overlay checked; 17 of 17 on the lines before the lines'
+  // widths refined the field top's pitch).
   const std::set<std::string> showing_lines = {"scarrix_nao_unknown/images/max_japan0127.png"};
   long points = 0, on_unlabelled_lines = 0;
   for (const auto& [folder, s] : summaries_) {
@@ -95,8 +97,9 @@ TEST_F(RealFramesTest, MaskedImages) {
   const std::map<std::string, std::pair<double, double>> floors = {
       // folder: (precision, recall) floors
       // its centre circle and halfway line lie above the nominal horizon; the first scan finds
-      // specks of turf only, the field top rescan (step 4e) the lines
-      {"bitbots_nao_upper", {0.9, 0.1}},
+      // specks of turf only, the field top rescan (step 4e) the lines, whose widths then give
+      // the rest of the pitch (0.97 / 0.12 with the bound's pitch alone; 0.92 / 0.91 measured)
+      {"bitbots_nao_upper", {0.9, 0.85}},
       {"bitbots_kid_620x480", {0.3, 0.6}},
       {"torso21_kid_800x600", {0.6, 0.3}},
       // hard sunlight: 1 of its 12 points lies on a line

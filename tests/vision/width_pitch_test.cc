@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -47,6 +48,26 @@ TEST(WidthPitch, FindsThePitchTheWidthsAskFor) {
     // one kept lies within a few degrees of the error.
     EXPECT_NEAR(*offset / kDeg, error_deg, 4.0) << error_deg;
   }
+}
+
+TEST(WidthPitch, AboveABoundTheWidthsGiveThePitchWithinTheRange) {
+  // A pose whose pitch is a lower bound (field_top_pitch.h): the spots' widths place the pitch in
+  // [bound, bound + range], at its end when the real pitch lies beyond it.
+  const CameraPreset preset = cameraPreset("nao-top");
+  const CameraModel bound(preset.intrinsics, preset.robot_T_camera);
+  const double range = 0.115;
+  for (const double error_deg : {0.0, 3.0, 5.0, 10.0}) {
+    Pose3 real = preset.robot_T_camera;
+    real.pitch += error_deg * kDeg;
+    std::vector<LineSpot> spots = runsOfLines(bound, CameraModel(preset.intrinsics, real));
+    // Accepted spots are at least a pixel wide (thinner far lines give no candidate).
+    spots.erase(std::remove_if(spots.begin(), spots.end(),
+                               [](const LineSpot& spot) { return spot.width_px < 1.f; }),
+                spots.end());
+    const double offset = fitPitchAboveBound(bound, spots, range, WidthPitchConfig{});
+    EXPECT_NEAR(offset, std::min(error_deg * kDeg, range), 0.6 * kDeg) << error_deg;
+  }
+  EXPECT_EQ(fitPitchAboveBound(bound, {}, range, WidthPitchConfig{}), 0.0);
 }
 
 TEST(WidthPitch, NoOffsetForWidthsNoPitchExplains) {
