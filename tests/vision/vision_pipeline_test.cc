@@ -252,22 +252,40 @@ TEST(VisionPipeline, DegenerateImagesGiveFewPoints) {
   EXPECT_TRUE(sky.ground.visible_regions.empty());
 }
 
+/// The nao-top view of the SPL field from (x, 0) with its camera pitch recorded as 0 (a nominal
+/// pose on a robot whose head is pitched down): the lines lie above the recorded horizon.
+struct LevelRecordedView {
+  const TestView& view;
+  Pose3 recorded;    ///< the camera pose with pitch 0
+  double error_rad;  ///< the real pitch the recorded pose lacks
+};
+LevelRecordedView levelRecordedView(double x_m) {
+  testing::SyntheticStyle style;
+  style.noise_sigma = 3.0;
+  const TestView& view = testing::testView("nao-top", "spl", Pose2(x_m, 0.0, 0.0), style);
+  Pose3 recorded = view.preset.robot_T_camera;
+  const double error_rad = recorded.pitch;
+  recorded.pitch = 0.0;
+  return {view, recorded, error_rad};
+}
+
+/// The pipeline with the field top's pitch taken as exact (no shortfall allowed for).
+VisionConfig boundOnly(const TestView& view) {
+  VisionConfig config = configFor(view);
+  config.field_top_pitch.max_shortfall_rad = 0.0;
+  return config;
+}
+
 TEST(VisionPipeline, LinesAboveTheRecordedHorizonAreFoundWithThePitchTheFieldAsksFor) {
   // The image of a camera pitched 20.6 deg down, recorded as looking straight ahead (a nominal
   // pose on a robot whose head is pitched): every line lies above the recorded horizon, so the
   // first scan sees turf only. The field's top seen above that horizon bounds the pitch: the
   // frame is scanned again with the horizon just above the far border, and the lines give points;
   // their widths then tell how much steeper than the bound the camera looks.
-  testing::SyntheticStyle style;
-  style.noise_sigma = 3.0;
-  const TestView& view = testing::testView("nao-top", "spl", Pose2(1.0, 0.0, 0.0), style);
-  Pose3 recorded = view.preset.robot_T_camera;
-  const double error_rad = recorded.pitch;
-  recorded.pitch = 0.0;
+  const auto [view, recorded, error_rad] = levelRecordedView(1.0);
   // A bound, not the pitch: the carpet's far edge (4.14 m ahead of the camera) lies 6.9 deg below
   // the horizon, where the stage assumes border_depression_rad (2.9 deg).
-  VisionConfig bound_only = configFor(view);
-  bound_only.field_top_pitch.max_shortfall_rad = 0.0;
+  const VisionConfig bound_only = boundOnly(view);
   VisionPipeline bounded(view.preset.intrinsics, bound_only);
   const double camera_x = view.field_T_robot.x + recorded.x;
   const double border_depression = std::atan2(recorded.z, view.field.outerHalfLength() - camera_x);
@@ -305,15 +323,8 @@ TEST(VisionPipeline, LinesWiderThanTheFieldTopBoundSaysGiveItsShortfall) {
   // the horizon, so the bound is 8 deg short of the real pitch and the lines are too wide for it.
   // Runs as wide as a line under the bound plus max_shortfall_rad (6.6 deg) pass the width test,
   // and their widths give the pitch within that range.
-  testing::SyntheticStyle style;
-  style.noise_sigma = 3.0;
-  const TestView& view = testing::testView("nao-top", "spl", Pose2(2.5, 0.0, 0.0), style);
-  Pose3 recorded = view.preset.robot_T_camera;
-  const double error_rad = recorded.pitch;
-  recorded.pitch = 0.0;
-  VisionConfig bound_only = configFor(view);
-  bound_only.field_top_pitch.max_shortfall_rad = 0.0;
-  VisionPipeline bounded(view.preset.intrinsics, bound_only);
+  const auto [view, recorded, error_rad] = levelRecordedView(2.5);
+  VisionPipeline bounded(view.preset.intrinsics, boundOnly(view));
   const VisionResult at_bound = bounded.process(view.image, recorded);
   VisionPipeline pipeline(view.preset.intrinsics, configFor(view));
   const VisionResult result = pipeline.process(view.image, recorded);
@@ -341,11 +352,7 @@ TEST(VisionPipeline, SpecksBelowTheRecordedHorizonDoNotHideTheLinesAboveIt) {
   // scan finds spots on them but no line (no segment, no arc), which is what a frame whose
   // horizon cuts below its lines shows when a ball, a robot's part or a bright tuft lies on the
   // turf. Such a frame is scanned again like a frame without spots.
-  testing::SyntheticStyle style;
-  style.noise_sigma = 3.0;
-  const TestView& view = testing::testView("nao-top", "spl", Pose2(1.0, 0.0, 0.0), style);
-  Pose3 recorded = view.preset.robot_T_camera;
-  recorded.pitch = 0.0;
+  const auto [view, recorded, error_rad] = levelRecordedView(1.0);
   const CameraModel camera(view.preset.intrinsics, recorded);
   const LineWidthModel widths(camera, view.field.line_width, configFor(view).line_width);
   cv::Mat image = view.image.clone();
