@@ -146,9 +146,13 @@ GlobalHoughLocalizer::AlongLineScan GlobalHoughLocalizer::scanAlongLine(
     coarse_index.push_back(j);
     coarse_s.push_back(fine[j]);
   }
+  // Empty when no position can reach min_positive (the scan stops early).
   const std::vector<double> coarse_scores =
-      scoreAlongLine(few, theta, t0, u, coarse_s, map_.grid(), config_.scoring);
-  if (*std::max_element(coarse_scores.begin(), coarse_scores.end()) < min_positive) return scan;
+      scoreAlongLine(few, theta, t0, u, coarse_s, map_.grid(), config_.scoring, min_positive);
+  if (coarse_scores.empty() ||
+      *std::max_element(coarse_scores.begin(), coarse_scores.end()) < min_positive) {
+    return scan;
+  }
   std::vector<double> coarse_upper = coarse_scores;
   std::vector<char> coarse_exact(coarse_s.size(), 0);
   const AlongLineFit coarse =

@@ -92,7 +92,7 @@ std::vector<PoseScore> scoreTranslations(const WeightedPoints& points, double th
 std::vector<double> scoreAlongLine(const WeightedPoints& points, double theta_rad,
                                    const Eigen::Vector2d& t0, const Eigen::Vector2d& u,
                                    const std::vector<double>& s_values, const DistanceGrid& grid,
-                                   const ScoringConfig& config) {
+                                   const ScoringConfig& config, double reach) {
   const std::size_t n = s_values.size();
   std::vector<double> out(n, 0.0);
   std::vector<double> tx(n), ty(n);
@@ -118,6 +118,11 @@ std::vector<double> scoreAlongLine(const WeightedPoints& points, double theta_ra
   const double u_norm = u.norm() * (1.0 + 1e-12);
   const double u_l1 = (std::abs(u.x()) + std::abs(u.y())) * (1.0 + 1e-12);
   constexpr double kRoundingM = 1e-9;
+  // The early stop: the weight of the points still to come, and the best sum so far. The margin
+  // covers the rounding of the sums, so a scan stops only where every score stays below reach.
+  const bool may_stop = reach > -std::numeric_limits<double>::infinity();
+  double to_come = points.totalWeight(), best = 0.0;
+  const double margin = 1e-9 * (std::abs(to_come) + std::abs(reach));
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Eigen::Vector2d& p = points.points[i];
     const double rx = c * p.x() - s * p.y(), ry = s * p.x() + c * p.y();
@@ -131,6 +136,7 @@ std::vector<double> scoreAlongLine(const WeightedPoints& points, double theta_ra
       const double d = near ? grid.distance(q) : grid.distanceBelow(q, limit);
       near = d < limit;
       out[j] += w * kernel(d, inv_w2);
+      best = std::max(best, out[j]);
       std::size_t next = j + 1;
       if (d > limit) {
         const bool on_grid = grid.onGrid(q);
@@ -145,6 +151,8 @@ std::vector<double> scoreAlongLine(const WeightedPoints& points, double theta_ra
       }
       j = next;
     }
+    to_come -= w;
+    if (may_stop && best + to_come + margin < reach) return {};
   }
   return out;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "field_models/distance_grid.h"
@@ -37,10 +38,14 @@ std::vector<PoseScore> scoreTranslations(const WeightedPoints& points, double th
 /// numbers, bit for bit (each sum adds the same terms in the same order; a point adds exactly
 /// zero where it is beyond the kernel), but point by point: from where a point is far from every
 /// line it skips the positions at which the grid's bound says it cannot come near one.
+/// reach: when no position can score `reach` or more, the scan may stop early and return an
+/// empty vector (a point adds at most its weight, so after each point the best sum so far plus
+/// the weight still to come bounds every position's score).
 std::vector<double> scoreAlongLine(const WeightedPoints& points, double theta_rad,
                                    const Eigen::Vector2d& t0, const Eigen::Vector2d& u,
                                    const std::vector<double>& s_values, const DistanceGrid& grid,
-                                   const ScoringConfig& config);
+                                   const ScoringConfig& config,
+                                   double reach = -std::numeric_limits<double>::infinity());
 
 struct PruningConfig {
   double min_inlier_share = 0.25;     ///< drop candidates with fewer points on map segments

@@ -194,6 +194,13 @@ TEST_P(FastPathsTest, ScoringAlongALineEqualsScoringEachPose) {
         ASSERT_EQ(scan[k], one) << along << " " << theta << " " << k;  // bit for bit
         on_lines += one > 0.3 * points.totalWeight();
       }
+      // The early stop: a scan asked to reach its own best score runs to the end and gives the
+      // same numbers; asked for a little more, it stops (returns nothing).
+      const double best = *std::max_element(scan.begin(), scan.end());
+      EXPECT_EQ(scoreAlongLine(points, theta, t0, dir, s_values, grid, config, best), scan);
+      EXPECT_TRUE(scoreAlongLine(points, theta, t0, dir, s_values, grid, config,
+                                 best + 1e-6 * points.totalWeight())
+                      .empty());
     }
   }
   EXPECT_GT(on_lines, 10);  // some positions put many points on lines
