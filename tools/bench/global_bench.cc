@@ -374,7 +374,8 @@ void printWorstFrames() {
 }
 
 /// `--profile=FIELD/POINTS`: locate() once on each summary frame of that row; `--profile=
-/// worst/FIELD`: once on each worst-frame frame of that field, printing the slowest ten. No grid
+/// worst/FIELD`: once on each worst-frame frame of that field, printing the slowest ten
+/// (`worst/FIELD/K`: frame K of them alone, as numbered in that list). No grid
 /// search and no Google benchmark, so that an instruction count (callgrind with --toggle-collect
 /// on locate) covers exactly these calls.
 int profile(const std::string& what) {
@@ -387,20 +388,25 @@ int profile(const std::string& what) {
     }
     return 0;
   }
+  // `worst/FIELD/K`: frame K alone (the frames are drawn in order, so it is the same frame).
+  const std::size_t slash2 = b.find('/');
+  const std::string name = b.substr(0, slash2);
+  const int only = slash2 == std::string::npos ? -1 : std::stoi(b.substr(slash2 + 1));
   constexpr int kWorstFrames = 500;
   std::mt19937_64 rng(3000);
-  const GlobalHoughLocalizer& ghl = localizer(b);  // the map part is built here, not timed
+  const GlobalHoughLocalizer& ghl = localizer(name);  // the map part is built here, not timed
   std::vector<std::pair<double, int>> ms;
   std::vector<char> kind(kWorstFrames);
   for (int k = 0; k < kWorstFrames; ++k) {
-    const SyntheticFrame f = worstFrame(b, k, rng);
+    const SyntheticFrame f = worstFrame(name, k, rng);
+    if (only >= 0 && k != only) continue;
     kind[k] = hasOnlyParallelLines(f) ? 'p' : hasTwoDirections(f) ? '2' : '-';
     const double t0 = cpuSeconds();
     benchmark::DoNotOptimize(ghl.locate(f.ground).size());
     ms.emplace_back(1e3 * (cpuSeconds() - t0), k);
   }
   std::sort(ms.rbegin(), ms.rend());
-  for (int i = 0; i < 10; ++i) {
+  for (int i = 0; i < std::min<int>(10, ms.size()); ++i) {
     std::printf("frame %3d (%c): %.3f ms\n", ms[i].second, kind[ms[i].second], ms[i].first);
   }
   return 0;
