@@ -81,7 +81,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
 
 std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
     const PoseHypothesis& candidate, const WeightedPoints& points,
-    const VisibilityEvidence& evidence, double min_positive) const {
+    const VisibilityEvidence& evidence, double min_score) const {
   const Eigen::Vector2d u = candidate.line_direction;
   const Eigen::Vector2d t0 = candidate.field_T_robot.translation();
   const double theta = candidate.field_T_robot.theta;
@@ -94,7 +94,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
   const double step = config_.line_scan_step_m;
   const AlongLineScan scan =
       scanAlongLine(candidate, subsamplePoints(points, config_.prescore_points), evidence, s_min,
-                    s_max, min_positive);
+                    s_max, min_score);
   if (!scan.fit.found) return {};
   const AlongLineFit& fit = scan.fit;
   const std::vector<double>& s_values = scan.s_values;
@@ -124,7 +124,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::placeAlongLines(
 
 GlobalHoughLocalizer::AlongLineScan GlobalHoughLocalizer::scanAlongLine(
     const PoseHypothesis& candidate, const WeightedPoints& few, const VisibilityEvidence& evidence,
-    double s_min, double s_max, double min_positive) const {
+    double s_min, double s_max, double min_score) const {
   const Eigen::Vector2d u = candidate.line_direction;
   const Eigen::Vector2d t0 = candidate.field_T_robot.translation();
   const double theta = candidate.field_T_robot.theta;
@@ -146,17 +146,18 @@ GlobalHoughLocalizer::AlongLineScan GlobalHoughLocalizer::scanAlongLine(
     coarse_index.push_back(j);
     coarse_s.push_back(fine[j]);
   }
-  // Empty when no position can reach min_positive (the scan stops early).
+  // A positive score bounds the score: empty when no position can reach min_score (the scan
+  // stops early).
   const std::vector<double> coarse_scores =
-      scoreAlongLine(few, theta, t0, u, coarse_s, map_.grid(), config_.scoring, min_positive);
+      scoreAlongLine(few, theta, t0, u, coarse_s, map_.grid(), config_.scoring, min_score);
   if (coarse_scores.empty() ||
-      *std::max_element(coarse_scores.begin(), coarse_scores.end()) < min_positive) {
+      *std::max_element(coarse_scores.begin(), coarse_scores.end()) < min_score) {
     return scan;
   }
   std::vector<double> coarse_upper = coarse_scores;
   std::vector<char> coarse_exact(coarse_s.size(), 0);
-  const AlongLineFit coarse =
-      fitAlongLine(candidate, coarse_s, coarse_scores, evidence, &coarse_upper, &coarse_exact);
+  const AlongLineFit coarse = fitAlongLine(candidate, coarse_s, coarse_scores, evidence,
+                                           &coarse_upper, &coarse_exact, min_score);
   if (!coarse.found) return scan;
   auto visitBetween = [&](std::size_t from, std::size_t to) {  // fine indices, exclusive
     for (std::size_t j = from + 1; j < to; ++j) visit[j] = 2;
@@ -188,14 +189,14 @@ GlobalHoughLocalizer::AlongLineScan GlobalHoughLocalizer::scanAlongLine(
       exact.push_back(0);
     }
   }
-  scan.fit = fitAlongLine(candidate, scan.s_values, scores, evidence, &upper, &exact);
+  scan.fit = fitAlongLine(candidate, scan.s_values, scores, evidence, &upper, &exact, min_score);
   return scan;
 }
 
 GlobalHoughLocalizer::AlongLineFit GlobalHoughLocalizer::fitAlongLine(
     const PoseHypothesis& candidate, const std::vector<double>& s_values,
     const std::vector<double>& positive, const VisibilityEvidence& evidence,
-    std::vector<double>* upper_bounds, std::vector<char>* exact_scores) const {
+    std::vector<double>* upper_bounds, std::vector<char>* exact_scores, double min_score) const {
   // A position's score is its positive score less the negative evidence. Only three numbers of
   // all positions matter: the best score, and the first and the last position within the
   // tolerance of it (the span where the points fit). The penalty is >= 0, so a positive score
@@ -229,20 +230,22 @@ GlobalHoughLocalizer::AlongLineFit GlobalHoughLocalizer::fitAlongLine(
   AlongLineFit fit;
   if (n == 0) return fit;
   // The best score, best positive score first: no position whose positive score is below the
-  // best so far can beat it.
+  // best so far (or below min_score) can beat it.
   std::vector<std::size_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return positive[a] > positive[b]; });
   fit.best = -1e300;
   for (std::size_t i : order) {
-    if (fit.best > -1e300 && positive[i] < fit.best) break;
-    scoreIfAbove(i, fit.best);
-    if (exact[i] && upper[i] > fit.best) {
+    const double level = std::max(fit.best, min_score);
+    if (level > -1e300 && positive[i] < level) break;
+    scoreIfAbove(i, level);
+    if (exact[i] && upper[i] > fit.best && upper[i] >= min_score) {
       fit.best = upper[i];
       fit.best_index = i;
     }
   }
+  if (fit.best < min_score) return fit;
   // The first and the last position that reach the floor, each searched from its end.
   const double floor = fit.best - config_.line_scan_tolerance * std::max(std::abs(fit.best), 1.0);
   auto reaches = [&](std::size_t i) {

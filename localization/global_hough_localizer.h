@@ -102,12 +102,12 @@ class GlobalHoughLocalizer {
 
   // Parts of the stages.
   /// The candidate's line scanned and the 1-D hypothesis placed on it; none when the line has
-  /// no place where the points fit, or when no coarse position's positive score (an upper bound
-  /// of its score) reaches `min_positive`.
+  /// no place where the points fit, or when no scanned position's score (positive less negative
+  /// evidence) reaches `min_score`.
   std::vector<PoseHypothesis> placeAlongLines(const PoseHypothesis& candidate,
                                               const WeightedPoints& points,
                                               const VisibilityEvidence& evidence,
-                                              double min_positive = -1e300) const;
+                                              double min_score = -1e300) const;
   /// Of a scan along the lines: the best score (positive less negative evidence) and the first
   /// and last positions (indices) whose score is within line_scan_tolerance of it.
   struct AlongLineFit {
@@ -125,18 +125,20 @@ class GlobalHoughLocalizer {
   /// The scan over [s_min, s_max] in line_scan_step_m steps, coarse to fine: every other
   /// position, then the ones between next to the best and at the ends of the span where the
   /// points fit. `few`: the points subsampled for scoring. Stops after the coarse positions
-  /// (fit not found) when none has a positive score of `min_positive`.
+  /// (fit not found) when none has a score of `min_score`.
   AlongLineScan scanAlongLine(const PoseHypothesis& candidate, const WeightedPoints& few,
                               const VisibilityEvidence& evidence, double s_min, double s_max,
-                              double min_positive) const;
+                              double min_score) const;
   /// The fit of the scan at s_values along candidate's line_direction from its translation, with
   /// `positive` the positive score at each position; the negative evidence only where needed.
   /// `upper` holds an upper bound of each position's score (at first `positive`), or the score
   /// where `exact`; the fit tightens them, and a later fit over some of the same positions can
-  /// start from them.
+  /// start from them. Not found when no position's score reaches `min_score` (the negative
+  /// evidence is then computed only where a position could).
   AlongLineFit fitAlongLine(const PoseHypothesis& candidate, const std::vector<double>& s_values,
                             const std::vector<double>& positive, const VisibilityEvidence& evidence,
-                            std::vector<double>* upper, std::vector<char>* exact) const;
+                            std::vector<double>* upper, std::vector<char>* exact,
+                            double min_score = -1e300) const;
   /// True when only parallel lines are in view: a 1-D hypothesis explains the points at least
   /// parallel_only_share as well as the best full pose, and that pose has few points across the
   /// lines.
@@ -144,7 +146,7 @@ class GlobalHoughLocalizer {
                          const WeightedPoints& points) const;
   /// Parallel-only frames: every 1-D line candidate (all map lines of the seen direction, every
   /// heading) placed along its line by the scan; one of each pair of point-symmetric twins is
-  /// scanned and the other mirrored. A line whose coarse scan stays below the pruning share
+  /// scanned and the other mirrored. A line whose scan stays below the pruning share
   /// (min_relative_score) of `best_score` is left out, as pruning leaves out such a candidate,
   /// and so is a line of `placed` (a survivor's, already among the hypotheses).
   std::vector<PoseHypothesis> everyLineHypotheses(const std::vector<PoseHypothesis>& lines,

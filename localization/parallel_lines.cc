@@ -85,14 +85,14 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
     const WeightedPoints& points, const VisibilityEvidence& evidence, double best_score) const {
   const bool symmetric = map_.pointSymmetric();
   // A line that cannot reach the share of the best score that pruning keeps of the candidates
-  // would end with no weight: its coarse positive scores bound its score from above.
-  const double min_positive =
+  // would end with no weight (exp(-10) of the best's at the default temperature).
+  const double min_score =
       best_score > 0.0 ? config_.pruning.min_relative_score * best_score : -1e300;
   std::vector<PoseHypothesis> scanned, out;
   for (const PoseHypothesis& line : lines) {
     if (lineScanned(placed, line, false) || lineScanned(scanned, line, symmetric)) continue;
     scanned.push_back(line);
-    for (const PoseHypothesis& h : placeAlongLines(line, points, evidence, min_positive)) {
+    for (const PoseHypothesis& h : placeAlongLines(line, points, evidence, min_score)) {
       out.push_back(h);
       if (!symmetric) continue;
       out.push_back(mirrored(h));  // the map is point-symmetric: the twin scores the same
