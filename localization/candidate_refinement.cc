@@ -36,16 +36,23 @@ bool carpetInterval(const Eigen::Vector2d& t0, const Eigen::Vector2d& u, double 
 }  // namespace
 
 void GlobalHoughLocalizer::refineSurvivors(LocateState& s) const {
+  double best = -1e300;  // the survivors come best first (converge)
   for (const PoseHypothesis& c : s.located) {
-    for (PoseHypothesis& h : refineCandidate(c, s.fine, s.evidence, &s.line_scans)) {
+    for (PoseHypothesis& h :
+         refineCandidate(c, s.fine, s.evidence, &s.line_scans, competingScore(best))) {
+      best = std::max(best, h.score);
       s.refined.push_back(std::move(h));
     }
   }
 }
 
+double GlobalHoughLocalizer::competingScore(double best) const {
+  return best > 0.0 ? config_.pruning.min_relative_score * best : -1e300;
+}
+
 std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
     const PoseHypothesis& candidate, const WeightedPoints& points,
-    const VisibilityEvidence& evidence, LineScans* scans) const {
+    const VisibilityEvidence& evidence, LineScans* scans, double min_score) const {
   PoseHypothesis h = candidate;
   const bool was_parallel = h.kind == HypothesisKind::kParallel;
   const Eigen::Vector2d frozen = was_parallel ? h.line_direction : Eigen::Vector2d::Zero();
@@ -71,7 +78,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
     if (scans->count >= config_.max_line_scans || lineScanned(scans->lines, h, false)) return {};
     ++scans->count;
     scans->lines.push_back(h);
-    return placeAlongLines(h, points, evidence);
+    return placeAlongLines(h, points, evidence, min_score);
   }
   h.kind = HypothesisKind::kFull;
   h.line_direction.setZero();

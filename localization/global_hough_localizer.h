@@ -49,16 +49,17 @@ class GlobalHoughLocalizer {
   /// Gauss-Newton, observability (kParallel when only parallel lines constrain it; then a scan
   /// along the lines places the mean), covariance, final score including negative evidence.
   /// A kParallel candidate comes back placed on its line (or not at all when the points fit
-  /// nowhere along it, when its line was scanned before, or when config.max_line_scans lines
-  /// were scanned in this frame); `scans` records the lines scanned.
+  /// nowhere along it or none of its positions scores `min_score`, when its line was scanned
+  /// before, or when config.max_line_scans lines were scanned in this frame); `scans` records
+  /// the lines scanned.
   struct LineScans {
     int count = 0;                      ///< scans so far (at most config.max_line_scans)
     std::vector<PoseHypothesis> lines;  ///< the kParallel candidates scanned, one per line
   };
   std::vector<PoseHypothesis> refineCandidate(const PoseHypothesis& candidate,
                                               const WeightedPoints& points,
-                                              const VisibilityEvidence& evidence,
-                                              LineScans* scans) const;
+                                              const VisibilityEvidence& evidence, LineScans* scans,
+                                              double min_score = -1e300) const;
 
  private:
   /// What the stages of locate() hand on to each other (global_locate_state.h).
@@ -86,7 +87,8 @@ class GlobalHoughLocalizer {
   /// Coarse Gauss-Newton of every pruned candidate on the pre-score points; keeps one of each
   /// group that converged to the same pose, best score first.
   void converge(LocateState& s) const;
-  /// refineCandidate() of every survivor, on the refinement points.
+  /// refineCandidate() of every survivor, on the refinement points; a survivor placed by a scan
+  /// along its line must reach competingScore() of the best hypothesis refined before it.
   void refineSurvivors(LocateState& s) const;
   /// Merges duplicates, full poses and 1-D hypotheses apart: a full pose near a 1-D hypothesis'
   /// mean is not its duplicate (it says where along the line, which the 1-D one does not).
@@ -154,6 +156,11 @@ class GlobalHoughLocalizer {
                                                   const WeightedPoints& points,
                                                   const VisibilityEvidence& evidence,
                                                   double best_score) const;
+  /// The least score (min_relative_score of `best`, the best hypothesis' score so far) a
+  /// hypothesis needs to compete: below it pruning would drop it as a candidate, and its weight
+  /// would be at most exp(-10) of the best's at the default temperature. A scan along lines
+  /// looks only for positions that reach it.
+  double competingScore(double best) const;
   /// True when `line` (a kParallel candidate) lies on a line of `scanned`, or on a twin of one
   /// when `mirrors` (a point-symmetric map): same heading, same offset across the lines.
   bool lineScanned(const std::vector<PoseHypothesis>& scanned, const PoseHypothesis& line,

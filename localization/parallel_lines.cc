@@ -84,10 +84,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
     const std::vector<PoseHypothesis>& lines, const std::vector<PoseHypothesis>& placed,
     const WeightedPoints& points, const VisibilityEvidence& evidence, double best_score) const {
   const bool symmetric = map_.pointSymmetric();
-  // A line that cannot reach the share of the best score that pruning keeps of the candidates
-  // would end with no weight (exp(-10) of the best's at the default temperature).
-  const double min_score =
-      best_score > 0.0 ? config_.pruning.min_relative_score * best_score : -1e300;
+  const double min_score = competingScore(best_score);
   std::vector<PoseHypothesis> scanned, out;
   for (const PoseHypothesis& line : lines) {
     if (lineScanned(placed, line, false) || lineScanned(scanned, line, symmetric)) continue;
