@@ -60,6 +60,18 @@ struct FieldColor {
     return dr * dr + dg * dg < tolerance * tolerance;
   }
   bool isWhitish(const uchar* bgr) const { return isNearGrey(bgr, white_radius); }
+  /// Whether `bgr` is brighter than the mean of `a` and `b` (the pixels beside it) in every
+  /// channel, by amounts whose chromaticity lies within white_radius of grey: white light added.
+  bool addsWhite(const uchar* bgr, const uchar* a, const uchar* b) const {
+    float d[3], sum = 0.f;
+    for (int c = 0; c < 3; ++c) {
+      d[c] = bgr[c] - 0.5f * (a[c] + b[c]);
+      if (d[c] <= 0.f) return false;
+      sum += d[c];
+    }
+    const float dr = d[2] - sum / 3.f, dg = d[1] - sum / 3.f;
+    return dr * dr + dg * dg < white_radius * white_radius * sum * sum;
+  }
   /// Whether the pixel's chromaticity lies within `radius` of grey (1/3, 1/3).
   static bool isNearGrey(const uchar* bgr, float radius) {
     const float sum = static_cast<float>(bgr[0] + bgr[1] + bgr[2]);

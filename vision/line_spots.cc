@@ -97,6 +97,15 @@ class SpotScanner {
     return steepest > 0 ? 2.f * contrast / steepest : static_cast<float>(line.n);
   }
 
+  /// Whether the run's peak adds white light over the turf on both sides of the run (its width,
+  /// checked against LineSpotConfig::max_blend_width_px once measured, must be a thin line's).
+  template <typename Run>
+  bool thinWhite(const Scanline<Run>& line, int before, int peak, int after) const {
+    if (config_.max_blend_width_px <= 0.0) return false;
+    const uchar *a = line.at(before), *b = line.at(after);
+    return color_.isField(a) && color_.isField(b) && color_.addsWhite(line.at(peak), a, b);
+  }
+
   /// Turf within `count` px, with nothing dark on the way: a white ball patch is followed by a
   /// black one before the turf, a line edge only by its anti-aliased blend. Then `beside` px of
   /// turf beyond it (the image border may cut them short): a line lies on the field, so turf
@@ -157,7 +166,9 @@ class SpotScanner {
       reject(line, peak, SpotRejection::kNotGreenBounded, &LineSpotStats::not_green_bounded);
       return;
     }
-    if (!color_.isWhitish(line.at(peak))) {
+    // A peak that is not white itself may be a thin line's, white by the light it adds.
+    const bool whitish = color_.isWhitish(line.at(peak));
+    if (!whitish && !thinWhite(line, before, peak, after)) {
       reject(line, peak, SpotRejection::kNotWhite, &LineSpotStats::not_white);
       return;
     }
@@ -172,6 +183,10 @@ class SpotScanner {
     if (widest_) {
       const Eigen::Vector2f widest_xy = widest_->expectedPx(u, v);
       widest = line.dv != 0 ? widest_xy.y() : widest_xy.x();
+    }
+    if (!whitish && width > config_.max_blend_width_px) {
+      reject(line, peak, SpotRejection::kNotWhite, &LineSpotStats::not_white);
+      return;
     }
     switch (compareLineWidth(width, expected, config_, widest)) {
       case WidthFit::kTooWide:

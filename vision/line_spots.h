@@ -60,6 +60,11 @@ struct LineSpotConfig {
                                         ///< varies much more over the image than between
                                         ///< neighbours varies with the light (gradients,
                                         ///< vignetting, shadows), which a 2-px rise does not see
+  double max_blend_width_px = 4.0;      ///< a run at most this wide (px, half maximum) with turf
+                                        ///< on both sides is white when the light it adds over
+                                        ///< that turf is: cameras keep chroma at half the luma's
+                                        ///< resolution (YUYV, JPEG 4:2:0), so a thin line takes
+                                        ///< the turf's chroma and only its luma rises (0: off)
   double min_width_ratio = 0.4;         ///< measured / expected width; worn or anti-aliased lines
   double max_width_ratio = 1.7;     ///< above: robots, feet, ball, posts (the other scan direction
                                     ///< catches lines crossing this one obliquely)
