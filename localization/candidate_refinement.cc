@@ -75,10 +75,21 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::refineCandidate(
     // on one line) would find the same hypothesis again.
     h.kind = HypothesisKind::kParallel;
     h.line_direction = eig.eigenvectors().col(0).normalized();
-    if (scans->count >= config_.max_line_scans || lineScanned(scans->lines, h, false)) return {};
-    ++scans->count;
+    if (lineScanned(scans->lines, h, false)) return {};
+    std::vector<PoseHypothesis> placed;
+    const int twin = scannedTwin(scans->lines, h);
+    if (twin >= 0) {  // the twin scores the same (a point-symmetric map)
+      for (const PoseHypothesis& t : scans->placed[twin]) {
+        if (t.score >= min_score) placed.push_back(mirrored(t));
+      }
+    } else {
+      if (scans->count >= config_.max_line_scans) return {};
+      ++scans->count;
+      placed = placeAlongLines(h, points, evidence, min_score);
+    }
     scans->lines.push_back(h);
-    return placeAlongLines(h, points, evidence, min_score);
+    scans->placed.push_back(placed);
+    return placed;
   }
   h.kind = HypothesisKind::kFull;
   h.line_direction.setZero();

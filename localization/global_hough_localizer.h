@@ -50,11 +50,13 @@ class GlobalHoughLocalizer {
   /// along the lines places the mean), covariance, final score including negative evidence.
   /// A kParallel candidate comes back placed on its line (or not at all when the points fit
   /// nowhere along it or none of its positions scores `min_score`, when its line was scanned
-  /// before, or when config.max_line_scans lines were scanned in this frame); `scans` records
-  /// the lines scanned.
+  /// before, or when config.max_line_scans lines were scanned in this frame); on the twin of a
+  /// line scanned before (a point-symmetric map) it is that scan's hypothesis mirrored, without
+  /// a scan. `scans` records the lines placed.
   struct LineScans {
     int count = 0;                      ///< scans so far (at most config.max_line_scans)
-    std::vector<PoseHypothesis> lines;  ///< the kParallel candidates scanned, one per line
+    std::vector<PoseHypothesis> lines;  ///< the kParallel candidates placed, one per line
+    std::vector<std::vector<PoseHypothesis>> placed;  ///< what each of `lines` gave
   };
   std::vector<PoseHypothesis> refineCandidate(const PoseHypothesis& candidate,
                                               const WeightedPoints& points,
@@ -165,6 +167,12 @@ class GlobalHoughLocalizer {
   /// when `mirrors` (a point-symmetric map): same heading, same offset across the lines.
   bool lineScanned(const std::vector<PoseHypothesis>& scanned, const PoseHypothesis& line,
                    bool mirrors) const;
+  /// On a point-symmetric map, the index in `scanned` of the line whose twin `line` lies on (its
+  /// scan's hypothesis mirrored is what a scan of `line` would give); -1 when none.
+  int scannedTwin(const std::vector<PoseHypothesis>& scanned, const PoseHypothesis& line) const;
+  /// Whether `pose` lies on the line of `scanned` (a kParallel candidate): same heading, same
+  /// offset across the lines.
+  static bool onScannedLine(const PoseHypothesis& scanned, const Pose2& pose);
   void finish(PoseHypothesis& candidate, const WeightedPoints& points,
               const VisibilityEvidence& evidence) const;
   bool onCarpet(const Pose2& pose) const;

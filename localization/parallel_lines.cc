@@ -43,17 +43,28 @@ void GlobalHoughLocalizer::addEveryLine(LocateState& s) const {
 
 bool GlobalHoughLocalizer::lineScanned(const std::vector<PoseHypothesis>& scanned,
                                        const PoseHypothesis& line, bool mirrors) const {
-  auto sameLine = [](const PoseHypothesis& a, const Pose2& b) {
-    const Eigen::Vector2d d = b.translation() - a.field_T_robot.translation();
-    const Eigen::Vector2d& u = a.line_direction;
-    return std::abs(angleDifference(a.field_T_robot.theta, b.theta)) < kSameLineRad &&
-           std::abs(d.x() * u.y() - d.y() * u.x()) < kSameLineM;
-  };
   const Pose2& p = line.field_T_robot;
   for (const PoseHypothesis& s : scanned) {
-    if (sameLine(s, p) || (mirrors && sameLine(s, mirrored(p)))) return true;
+    if (onScannedLine(s, p) || (mirrors && onScannedLine(s, mirrored(p)))) return true;
   }
   return false;
+}
+
+int GlobalHoughLocalizer::scannedTwin(const std::vector<PoseHypothesis>& scanned,
+                                      const PoseHypothesis& line) const {
+  if (!map_.pointSymmetric()) return -1;
+  const Pose2 twin = mirrored(line.field_T_robot);
+  for (std::size_t i = 0; i < scanned.size(); ++i) {
+    if (onScannedLine(scanned[i], twin)) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+bool GlobalHoughLocalizer::onScannedLine(const PoseHypothesis& scanned, const Pose2& pose) {
+  const Eigen::Vector2d d = pose.translation() - scanned.field_T_robot.translation();
+  const Eigen::Vector2d& u = scanned.line_direction;
+  return std::abs(angleDifference(scanned.field_T_robot.theta, pose.theta)) < kSameLineRad &&
+         std::abs(d.x() * u.y() - d.y() * u.x()) < kSameLineM;
 }
 
 bool GlobalHoughLocalizer::parallelOnlyFrame(const std::vector<PoseHypothesis>& refined,
