@@ -170,6 +170,8 @@ class GlobalHoughLocalizer {
   /// On a point-symmetric map, the index in `scanned` of the line whose twin `line` lies on (its
   /// scan's hypothesis mirrored is what a scan of `line` would give); -1 when none.
   int scannedTwin(const std::vector<PoseHypothesis>& scanned, const PoseHypothesis& line) const;
+  /// The index of the first line of `scanned` that `pose` lies on; -1 when none.
+  static int scannedLineIndex(const std::vector<PoseHypothesis>& scanned, const Pose2& pose);
   /// Whether `pose` lies on the line of `scanned` (a kParallel candidate): same heading, same
   /// offset across the lines.
   static bool onScannedLine(const PoseHypothesis& scanned, const Pose2& pose);

@@ -44,18 +44,19 @@ void GlobalHoughLocalizer::addEveryLine(LocateState& s) const {
 bool GlobalHoughLocalizer::lineScanned(const std::vector<PoseHypothesis>& scanned,
                                        const PoseHypothesis& line, bool mirrors) const {
   const Pose2& p = line.field_T_robot;
-  for (const PoseHypothesis& s : scanned) {
-    if (onScannedLine(s, p) || (mirrors && onScannedLine(s, mirrored(p)))) return true;
-  }
-  return false;
+  return scannedLineIndex(scanned, p) >= 0 ||
+         (mirrors && scannedLineIndex(scanned, mirrored(p)) >= 0);
 }
 
 int GlobalHoughLocalizer::scannedTwin(const std::vector<PoseHypothesis>& scanned,
                                       const PoseHypothesis& line) const {
-  if (!map_.pointSymmetric()) return -1;
-  const Pose2 twin = mirrored(line.field_T_robot);
+  return map_.pointSymmetric() ? scannedLineIndex(scanned, mirrored(line.field_T_robot)) : -1;
+}
+
+int GlobalHoughLocalizer::scannedLineIndex(const std::vector<PoseHypothesis>& scanned,
+                                           const Pose2& pose) {
   for (std::size_t i = 0; i < scanned.size(); ++i) {
-    if (onScannedLine(scanned[i], twin)) return static_cast<int>(i);
+    if (onScannedLine(scanned[i], pose)) return static_cast<int>(i);
   }
   return -1;
 }

@@ -63,17 +63,17 @@ struct FieldColor {
   /// Whether `bgr` is brighter than the mean of `a` and `b` (the pixels beside it) in every
   /// channel, by amounts whose chromaticity lies within white_radius of grey: white light added.
   bool addsWhite(const uchar* bgr, const uchar* a, const uchar* b) const {
-    float d[3], sum = 0.f;
+    float d[3];
     for (int c = 0; c < 3; ++c) {
       d[c] = bgr[c] - 0.5f * (a[c] + b[c]);
       if (d[c] <= 0.f) return false;
-      sum += d[c];
     }
-    const float dr = d[2] - sum / 3.f, dg = d[1] - sum / 3.f;
-    return dr * dr + dg * dg < white_radius * white_radius * sum * sum;
+    return isNearGrey(d, white_radius);
   }
-  /// Whether the pixel's chromaticity lies within `radius` of grey (1/3, 1/3).
-  static bool isNearGrey(const uchar* bgr, float radius) {
+  /// Whether the pixel's (or a colour difference's: `Channel` float) chromaticity lies within
+  /// `radius` of grey (1/3, 1/3).
+  template <typename Channel>
+  static bool isNearGrey(const Channel* bgr, float radius) {
     const float sum = static_cast<float>(bgr[0] + bgr[1] + bgr[2]);
     const float dr = bgr[2] - sum / 3.f, dg = bgr[1] - sum / 3.f;
     return dr * dr + dg * dg < radius * radius * sum * sum;
