@@ -1,6 +1,7 @@
 #include "vision/field_color.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "vision/pixel_access.h"
@@ -28,6 +29,15 @@ float quantile(std::vector<float>* values, double q) {
   auto it = values->begin() + static_cast<long>(q * (values->size() - 1));
   std::nth_element(values->begin(), it, values->end());
   return *it;
+}
+
+/// 1.4826 x the median absolute deviation: the sigma of a Gaussian, robust to outliers.
+float robustSigma(const std::vector<float>& values) {
+  const float centre = median(values);
+  std::vector<float> deviations;
+  deviations.reserve(values.size());
+  for (float v : values) deviations.push_back(std::abs(v - centre));
+  return 1.4826f * median(deviations);
 }
 
 float greyDistance(cv::Point2f c) { return std::hypot(c.x - 1.f / 3.f, c.y - 1.f / 3.f); }
@@ -143,6 +153,80 @@ cv::Point2f turfPeak(const std::vector<Sample>& samples, const FieldColorConfig&
   return best;
 }
 
+/// Lumas (0-255) of a set of samples as a histogram: medians and spreads of any luma range
+/// without sorting (a frame has thousands of field samples).
+class LumaHistogram {
+ public:
+  explicit LumaHistogram(const std::vector<float>& lumas) {
+    for (float l : lumas) ++count_[static_cast<std::size_t>(std::clamp(l, 0.f, 255.f))];
+  }
+  int count(int from, int to) const {  // samples with luma in [from, to)
+    int n = 0;
+    for (int l = from; l < to; ++l) n += count_[static_cast<std::size_t>(l)];
+    return n;
+  }
+  /// The luma of rank count(from, to) / 2 in [from, to): median() of those samples.
+  int median(int from, int to) const { return atRank(count_, from, to, count(from, to) / 2); }
+  /// robustSigma() of the samples with luma in [from, to).
+  float robustSigma(int from, int to) const {
+    const int centre = median(from, to);
+    std::array<int, 256> deviations{};
+    for (int l = from; l < to; ++l) {
+      deviations[static_cast<std::size_t>(std::abs(l - centre))] +=
+          count_[static_cast<std::size_t>(l)];
+    }
+    return 1.4826f * static_cast<float>(atRank(deviations, 0, 256, count(from, to) / 2));
+  }
+  /// Otsu's split: the luma that starts the upper of two classes with the largest between-class
+  /// variance (0: no split).
+  int otsuSplit() const {
+    const double n = count(0, 256);
+    double total = 0.0;
+    for (int l = 0; l < 256; ++l)
+      total += static_cast<double>(l) * count_[static_cast<std::size_t>(l)];
+    double below = 0.0, sum_below = 0.0, best_between = -1.0;
+    int split = 0;
+    for (int l = 1; l < 256; ++l) {
+      below += count_[static_cast<std::size_t>(l - 1)];
+      sum_below += (l - 1.0) * count_[static_cast<std::size_t>(l - 1)];
+      if (below == 0.0 || below == n || count_[static_cast<std::size_t>(l)] == 0) continue;
+      const double gap = (total - sum_below) / (n - below) - sum_below / below;
+      const double between = below * (n - below) * gap * gap;
+      if (between > best_between) best_between = between, split = l;
+    }
+    return split;
+  }
+
+ private:
+  static int atRank(const std::array<int, 256>& counts, int from, int to, int rank) {
+    for (int l = from; l < to; ++l) {
+      rank -= counts[static_cast<std::size_t>(l)];
+      if (rank < 0) return l;
+    }
+    return to - 1;
+  }
+  std::array<int, 256> count_{};
+};
+
+/// Splits the field samples into shade and lit turf (FieldColor::lit_split) where they form two
+/// light levels: Otsu's split of their lumas (the largest between-level variance), kept when
+/// both levels are large and their medians far enough apart to be light rather than texture.
+void splitLightLevels(const std::vector<float>& lumas, const FieldColorConfig& config,
+                      FieldColor* color) {
+  color->lit_split = 256.f;
+  const LumaHistogram histogram(lumas);
+  const int split = histogram.otsuSplit();
+  const double min_count = config.min_light_share * static_cast<double>(lumas.size());
+  if (split == 0 || histogram.count(0, split) < min_count ||
+      histogram.count(split, 256) < min_count) {
+    return;
+  }
+  if (histogram.median(split, 256) < config.min_light_ratio * histogram.median(0, split)) return;
+  color->lit_split = static_cast<float>(split);
+  color->shade_sigma = histogram.robustSigma(0, split);
+  color->lit_sigma = histogram.robustSigma(split, 256);
+}
+
 }  // namespace
 
 FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& start_rows,
@@ -187,9 +271,8 @@ FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& star
   color.chroma_noise = static_cast<float>(config.chroma_noise);
   color.field_share = static_cast<float>(lumas.size()) / samples.size();
   color.luma_median = median(lumas);
-  std::vector<float> deviations;
-  for (float l : lumas) deviations.push_back(std::abs(l - color.luma_median));
-  color.luma_sigma = 1.4826f * median(deviations);
+  color.luma_sigma = robustSigma(lumas);
+  splitLightLevels(lumas, config, &color);
   // Neighbouring samples in a column, 12 px apart, differ by the turf's texture and noise but
   // hardly by the light (gradients, vignetting, shadows change over tens of px): the spread of
   // their differences / sqrt 2 is the texture alone (the median |difference| of two Gaussian

@@ -31,6 +31,11 @@ struct FieldColorConfig {
   double memory_bonus = 1.5;          ///< the previous frame's colour wins when this times its
                                       ///< evidence in the current frame beats the best peak
   int memory_frames = 10;  ///< the last valid colour is offered for this many frames after it
+  // Sun and shade (FieldColor::lit_split): the field samples' lumas split into two light levels
+  // when each level holds at least this share of them ...
+  double min_light_share = 0.15;
+  double min_light_ratio = 1.7;  ///< ... and the lit level's median luma is this many times the
+                                 ///< shade's: more than turf texture or vignetting varies
 };
 
 /// The turf colour of one frame as normalised chromaticity (r, g) = (R, G) / (R + G + B), which
@@ -45,9 +50,16 @@ struct FieldColor {
   float texture_sigma = 0.f;  ///< the same from luma changes between field samples 12 px
                               ///< apart (/ sqrt 2): texture without the light, 0-255
   float min_luma = 0.f;       ///< darker pixels are not field (shadow limit)
-  float white_radius = 0.f;   ///< chromaticity distance to grey below which a pixel is "white"
-  float field_share = 0.f;    ///< share of samples below the horizon that are field
-  float chroma_noise = 0.f;   ///< FieldColorConfig::chroma_noise
+  /// Hard light (sun through windows, outdoors) leaves the turf in two light levels, whose mix
+  /// inflates luma_sigma: turf at or above lit_split (0-255) is lit, below it shaded, each level
+  /// with its own robust spread. One level (lit_split 256; the two sigmas unused) when the
+  /// samples do not split so (FieldColorConfig::min_light_share, min_light_ratio).
+  float lit_split = 256.f;
+  float shade_sigma = 0.f;   ///< luma spread of the shaded turf, 0-255
+  float lit_sigma = 0.f;     ///< ... and of the lit turf
+  float white_radius = 0.f;  ///< chromaticity distance to grey below which a pixel is "white"
+  float field_share = 0.f;   ///< share of samples below the horizon that are field
+  float chroma_noise = 0.f;  ///< FieldColorConfig::chroma_noise
 
   /// Luma used throughout the scanlines: (B + 2G + R) / 4, 0-255.
   static int luma(const uchar* bgr) { return (bgr[0] + 2 * bgr[1] + bgr[2]) >> 2; }

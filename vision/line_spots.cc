@@ -21,10 +21,15 @@ class SpotScanner {
         config_(config),
         spots_(spots),
         stats_(stats) {
-    const double noise_sigma =
-        std::min<double>(color.luma_sigma, config.max_sigma_over_texture * color.texture_sigma);
-    threshold_ =
-        static_cast<int>(std::max(config.min_contrast, config.noise_contrast * noise_sigma));
+    threshold_ = thresholdFor(color.luma_sigma);
+    const bool two_levels = color.lit_split <= 255.f;
+    shade_threshold_ = two_levels ? thresholdFor(color.shade_sigma) : threshold_;
+    // Light scales the turf's texture with its luma: the lit turf's spread is at least the
+    // shade's (a smaller one comes from something else in the lit level, such as a robot's
+    // green-tinted white close by).
+    lit_threshold_ =
+        two_levels ? std::max(shade_threshold_, thresholdFor(color.lit_sigma)) : threshold_;
+    lit_split_ = static_cast<int>(std::ceil(color.lit_split));
     dark_luma_ = static_cast<int>(config.dark_luma_ratio * color.luma_median);
     ball_classes_.patch_luma = static_cast<int>(color.luma_median) + threshold_ / 4;
     ball_classes_.patch_chroma = static_cast<float>(
@@ -39,13 +44,14 @@ class SpotScanner {
     int i = kEdgeGap;
     while (i < line.n) {
       const int background = line.luma(i - kEdgeGap);
-      if (line.luma(i) - background < threshold_) {
+      const int threshold = thresholdAt(background);
+      if (line.luma(i) - background < threshold) {
         ++i;
         continue;
       }
       int end = i;
       int peak = i;
-      while (end < line.n && line.luma(end) - background >= threshold_ / 2) {
+      while (end < line.n && line.luma(end) - background >= threshold / 2) {
         if (line.luma(end) > line.luma(peak)) peak = end;
         ++end;
       }
@@ -62,8 +68,8 @@ class SpotScanner {
     std::size_t kept = first;
     for (std::size_t i = first; i < spots_->size(); ++i) {
       const LineSpot spot = (*spots_)[i];
-      if (!continuesBeside(pixels, spot, threshold_ / 2, RunBounds{color_, dark_luma_},
-                           config_.continuation, buffer)) {
+      if (!continuesBeside(pixels, spot, shade_threshold_ / 2,  // the lower of the two
+                           RunBounds{color_, dark_luma_}, config_.continuation, buffer)) {
         reject(spot.pixel, SpotRejection::kCompactBlob, &LineSpotStats::compact_blob);
       } else if (onBall(pixels, spot, ballRadiusPx(spot), ball_classes_, config_.ball)) {
         reject(spot.pixel, SpotRejection::kOnBall, &LineSpotStats::on_ball);
@@ -75,6 +81,18 @@ class SpotScanner {
   }
 
  private:
+  /// The contrast a line must have over turf whose luma varies by `sigma` (LineSpotConfig).
+  int thresholdFor(double sigma) const {
+    const double noise_sigma =
+        std::min(sigma, config_.max_sigma_over_texture * color_.texture_sigma);
+    return static_cast<int>(std::max(config_.min_contrast, config_.noise_contrast * noise_sigma));
+  }
+
+  /// The threshold for a run rising from turf of this luma: that of the turf's light level.
+  int thresholdAt(int background_luma) const {
+    return background_luma >= lit_split_ ? lit_threshold_ : shade_threshold_;
+  }
+
   /// The radius (px) a ball at the spot has in the image: its radius over the ground's metres
   /// per pixel across the viewing direction there.
   double ballRadiusPx(const LineSpot& spot) const {
@@ -162,7 +180,11 @@ class SpotScanner {
     const int after = std::min(line.n - 1, end + 1);
     const int peak_luma = line.luma(peak);
     const int background_before = line.luma(before), background_after = line.luma(after);
-    if (peak_luma - background_after < threshold_ || end >= line.n) {
+    // Both sides must clear the threshold of the brighter side's light (the scan tested the
+    // rise over `before` against its own).
+    const int threshold = thresholdAt(std::max(background_before, background_after));
+    if (peak_luma - background_after < threshold || peak_luma - background_before < threshold ||
+        end >= line.n) {
       reject(line, peak, SpotRejection::kNotGreenBounded, &LineSpotStats::not_green_bounded);
       return;
     }
@@ -212,7 +234,7 @@ class SpotScanner {
         config_.green_gap_px + static_cast<int>(config_.green_gap_width_share * expected + 0.5);
     const int beside = std::max(config_.min_turf_beside_px,
                                 static_cast<int>(config_.turf_beside_width_share * expected + 0.5));
-    const int paint = peak_luma - threshold_;
+    const int paint = peak_luma - threshold;
     if (!greenWithin(line, static_cast<int>(std::floor(left)), -1, gap + 1, beside, paint) ||
         !greenWithin(line, static_cast<int>(std::ceil(right)), +1, gap + 1, beside, paint)) {
       reject(line, peak, SpotRejection::kNotGreenBounded, &LineSpotStats::not_green_bounded);
@@ -227,7 +249,9 @@ class SpotScanner {
   const LineSpotConfig& config_;
   std::vector<LineSpot>* spots_;
   LineSpotStats* stats_;
-  int threshold_ = 0;
+  int threshold_ = 0;                            ///< for all the turf (the ball's patches)
+  int shade_threshold_ = 0, lit_threshold_ = 0;  ///< for the turf of each light level ...
+  int lit_split_ = 256;                          ///< ... split at this luma (FieldColor)
   int dark_luma_ = 0;
   BallClasses ball_classes_{color_, 0, 0.f};
 };
