@@ -31,15 +31,6 @@ float quantile(std::vector<float>* values, double q) {
   return *it;
 }
 
-/// 1.4826 x the median absolute deviation: the sigma of a Gaussian, robust to outliers.
-float robustSigma(const std::vector<float>& values) {
-  const float centre = median(values);
-  std::vector<float> deviations;
-  deviations.reserve(values.size());
-  for (float v : values) deviations.push_back(std::abs(v - centre));
-  return 1.4826f * median(deviations);
-}
-
 float greyDistance(cv::Point2f c) { return std::hypot(c.x - 1.f / 3.f, c.y - 1.f / 3.f); }
 
 template <typename Pixels>
@@ -153,8 +144,8 @@ cv::Point2f turfPeak(const std::vector<Sample>& samples, const FieldColorConfig&
   return best;
 }
 
-/// Lumas (0-255) of a set of samples as a histogram: medians and spreads of any luma range
-/// without sorting (a frame has thousands of field samples).
+/// Lumas (0-255) of a set of samples as a histogram: medians and robust spreads of any luma
+/// range without sorting (a frame has thousands of field samples).
 class LumaHistogram {
  public:
   explicit LumaHistogram(const std::vector<float>& lumas) {
@@ -165,17 +156,23 @@ class LumaHistogram {
     for (int l = from; l < to; ++l) n += count_[static_cast<std::size_t>(l)];
     return n;
   }
-  /// The luma of rank count(from, to) / 2 in [from, to): median() of those samples.
-  int median(int from, int to) const { return atRank(count_, from, to, count(from, to) / 2); }
-  /// robustSigma() of the samples with luma in [from, to).
+  /// The luma of rank count(from, to) / 2 in [from, to) (median() of those samples), 0 if none.
+  int median(int from, int to) const {
+    const int n = count(from, to);
+    return n > 0 ? atRank(count_, from, to, n / 2) : 0;
+  }
+  /// 1.4826 x the median absolute deviation of the samples with luma in [from, to): the sigma of
+  /// a Gaussian, robust to outliers.
   float robustSigma(int from, int to) const {
+    const int n = count(from, to);
+    if (n == 0) return 0.f;
     const int centre = median(from, to);
     std::array<int, 256> deviations{};
     for (int l = from; l < to; ++l) {
       deviations[static_cast<std::size_t>(std::abs(l - centre))] +=
           count_[static_cast<std::size_t>(l)];
     }
-    return 1.4826f * static_cast<float>(atRank(deviations, 0, 256, count(from, to) / 2));
+    return 1.4826f * static_cast<float>(atRank(deviations, 0, 256, n / 2));
   }
   /// Otsu's split: the luma that starts the upper of two classes with the largest between-class
   /// variance (0: no split).
@@ -211,12 +208,11 @@ class LumaHistogram {
 /// Splits the field samples into shade and lit turf (FieldColor::lit_split) where they form two
 /// light levels: Otsu's split of their lumas (the largest between-level variance), kept when
 /// both levels are large and their medians far enough apart to be light rather than texture.
-void splitLightLevels(const std::vector<float>& lumas, const FieldColorConfig& config,
+void splitLightLevels(const LumaHistogram& histogram, const FieldColorConfig& config,
                       FieldColor* color) {
   color->lit_split = 256.f;
-  const LumaHistogram histogram(lumas);
   const int split = histogram.otsuSplit();
-  const double min_count = config.min_light_share * static_cast<double>(lumas.size());
+  const double min_count = config.min_light_share * histogram.count(0, 256);
   if (split == 0 || histogram.count(0, split) < min_count ||
       histogram.count(split, 256) < min_count) {
     return;
@@ -270,9 +266,10 @@ FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& star
   color.radius = radius;
   color.chroma_noise = static_cast<float>(config.chroma_noise);
   color.field_share = static_cast<float>(lumas.size()) / samples.size();
-  color.luma_median = median(lumas);
-  color.luma_sigma = robustSigma(lumas);
-  splitLightLevels(lumas, config, &color);
+  const LumaHistogram histogram(lumas);
+  color.luma_median = static_cast<float>(histogram.median(0, 256));
+  color.luma_sigma = histogram.robustSigma(0, 256);
+  splitLightLevels(histogram, config, &color);
   // Neighbouring samples in a column, 12 px apart, differ by the turf's texture and noise but
   // hardly by the light (gradients, vignetting, shadows change over tens of px): the spread of
   // their differences / sqrt 2 is the texture alone (the median |difference| of two Gaussian
