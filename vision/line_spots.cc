@@ -21,17 +21,17 @@ class SpotScanner {
         config_(config),
         spots_(spots),
         stats_(stats) {
-    threshold_ = thresholdFor(color.luma_sigma);
+    const int whole_turf = thresholdFor(color.luma_sigma);  // one level, and the ball's patches
     const bool two_levels = color.lit_split <= 255.f;
-    shade_threshold_ = two_levels ? thresholdFor(color.shade_sigma) : threshold_;
+    shade_threshold_ = two_levels ? thresholdFor(color.shade_sigma) : whole_turf;
     // Light scales the turf's texture with its luma: the lit turf's spread is at least the
     // shade's (a smaller one comes from something else in the lit level, such as a robot's
     // green-tinted white close by).
     lit_threshold_ =
-        two_levels ? std::max(shade_threshold_, thresholdFor(color.lit_sigma)) : threshold_;
+        two_levels ? std::max(shade_threshold_, thresholdFor(color.lit_sigma)) : whole_turf;
     lit_split_ = static_cast<int>(std::ceil(color.lit_split));
     dark_luma_ = static_cast<int>(config.dark_luma_ratio * color.luma_median);
-    ball_classes_.patch_luma = static_cast<int>(color.luma_median) + threshold_ / 4;
+    ball_classes_.patch_luma = static_cast<int>(color.luma_median) + whole_turf / 4;
     ball_classes_.patch_chroma = static_cast<float>(
         config.ball.patch_grey_ratio * std::hypot(color.r - 1.0 / 3.0, color.g - 1.0 / 3.0));
   }
@@ -249,7 +249,6 @@ class SpotScanner {
   const LineSpotConfig& config_;
   std::vector<LineSpot>* spots_;
   LineSpotStats* stats_;
-  int threshold_ = 0;                            ///< for all the turf (the ball's patches)
   int shade_threshold_ = 0, lit_threshold_ = 0;  ///< for the turf of each light level ...
   int lit_split_ = 256;                          ///< ... split at this luma (FieldColor)
   int dark_luma_ = 0;
