@@ -14,6 +14,7 @@ struct Sample {
   int luma;
   bool bottom;     ///< in the bottom band of the image
   int diff_below;  ///< |luma change| to the sample one step below (-1: none)
+  int row;         ///< image row (v)
 };
 
 float median(std::vector<float> values) {
@@ -52,7 +53,7 @@ std::vector<Sample> collectSamples(const Pixels& pixels, const std::vector<int>&
       }
       const float sum = static_cast<float>(p[0] + p[1] + p[2]);
       samples.push_back({p[2] / sum, p[1] / sum, luma, v >= bottom_row,
-                         below >= 0 ? std::abs(luma - below) : -1});
+                         below >= 0 ? std::abs(luma - below) : -1, v});
       below = luma;
     }
   }
@@ -223,6 +224,26 @@ void splitLightLevels(const LumaHistogram& histogram, const FieldColorConfig& co
   color->lit_sigma = histogram.robustSigma(split, 256);
 }
 
+/// FieldColor::band_texture_sigma: the field samples' luma changes to the sample below them
+/// (texture_sigma's measure) per band of image rows.
+void textureByBand(const std::vector<Sample>& samples, cv::Point2f centre, float radius,
+                   int image_rows, const FieldColorConfig& config, FieldColor* color) {
+  const int bands = std::clamp(config.texture_bands, 1, FieldColor::kMaxTextureBands);
+  color->texture_band_rows = (image_rows + bands - 1) / bands;
+  std::array<std::vector<float>, FieldColor::kMaxTextureBands> diffs;
+  for (const Sample& s : samples) {
+    if (s.diff_below < 0 || std::hypot(s.r - centre.x, s.g - centre.y) >= radius) continue;
+    diffs[static_cast<size_t>(std::min(bands - 1, s.row / color->texture_band_rows))].push_back(
+        static_cast<float>(s.diff_below));
+  }
+  for (int b = 0; b < FieldColor::kMaxTextureBands; ++b) {
+    std::vector<float>& band = diffs[static_cast<size_t>(b)];
+    color->band_texture_sigma[static_cast<size_t>(b)] =
+        static_cast<int>(band.size()) >= config.min_band_samples ? quantile(&band, 0.5) / 0.954f
+                                                                 : color->texture_sigma;
+  }
+}
+
 }  // namespace
 
 FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& start_rows,
@@ -275,6 +296,7 @@ FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& star
   // their differences / sqrt 2 is the texture alone (the median |difference| of two Gaussian
   // samples is 0.954 sigma).
   color.texture_sigma = quantile(&local_diffs, 0.5) / 0.954f;
+  textureByBand(samples, centre, radius, image.rows, config, &color);
   color.min_luma = std::max(static_cast<float>(config.min_luma),
                             static_cast<float>(config.shadow_luma_ratio) * color.luma_median);
   const float grey_distance = greyDistance(centre);

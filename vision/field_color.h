@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -36,6 +37,10 @@ struct FieldColorConfig {
   double min_light_share = 0.15;
   double min_light_ratio = 1.7;  ///< ... and the lit level's median luma is this many times the
                                  ///< shade's: more than turf texture or vignetting varies
+  // Texture per band of image rows (FieldColor::band_texture_sigma): far turf, whose blades blur
+  // together, is smoother than the near turf that dominates texture_sigma.
+  int texture_bands = 4;      ///< bands of equal height (at most FieldColor::kMaxTextureBands)
+  int min_band_samples = 40;  ///< a band with fewer field samples keeps texture_sigma
 };
 
 /// The turf colour of one frame as normalised chromaticity (r, g) = (R, G) / (R + G + B), which
@@ -55,8 +60,14 @@ struct FieldColor {
   /// with its own robust spread. One level (lit_split 256; the two sigmas unused) when the
   /// samples do not split so (FieldColorConfig::min_light_share, min_light_ratio).
   float lit_split = 256.f;
-  float shade_sigma = 0.f;   ///< luma spread of the shaded turf, 0-255
-  float lit_sigma = 0.f;     ///< ... and of the lit turf
+  float shade_sigma = 0.f;  ///< luma spread of the shaded turf, 0-255
+  float lit_sigma = 0.f;    ///< ... and of the lit turf
+  /// texture_sigma of the field samples in each band of texture_band_rows image rows (band k
+  /// from row k x texture_band_rows on), or texture_sigma where a band holds too few of them.
+  /// texture_band_rows 0: no bands (a hand-made colour; texture_sigma everywhere).
+  static constexpr int kMaxTextureBands = 8;
+  int texture_band_rows = 0;
+  std::array<float, kMaxTextureBands> band_texture_sigma{};
   float white_radius = 0.f;  ///< chromaticity distance to grey below which a pixel is "white"
   float field_share = 0.f;   ///< share of samples below the horizon that are field
   float chroma_noise = 0.f;  ///< FieldColorConfig::chroma_noise

@@ -14,23 +14,18 @@ namespace {
 class SpotScanner {
  public:
   SpotScanner(const FieldColor& color, const LineWidthModel& widths, const LineWidthModel* widest,
-              const LineSpotConfig& config, std::vector<LineSpot>* spots, LineSpotStats* stats)
+              const LineSpotConfig& config, cv::Size image, std::vector<LineSpot>* spots,
+              LineSpotStats* stats)
       : color_(color),
         widths_(widths),
         widest_(widest),
         config_(config),
         spots_(spots),
         stats_(stats) {
-    const int whole_turf = thresholdFor(color.luma_sigma);  // one level, and the ball's patches
-    const bool two_levels = color.lit_split <= 255.f;
-    shade_threshold_ = two_levels ? thresholdFor(color.shade_sigma) : whole_turf;
-    // Light scales the turf's texture with its luma: the lit turf's spread is at least the
-    // shade's (a smaller one comes from something else in the lit level, such as a robot's
-    // green-tinted white close by).
-    lit_threshold_ =
-        two_levels ? std::max(shade_threshold_, thresholdFor(color.lit_sigma)) : whole_turf;
     lit_split_ = static_cast<int>(std::ceil(color.lit_split));
+    setThresholdsByRow(image);
     dark_luma_ = static_cast<int>(config.dark_luma_ratio * color.luma_median);
+    const int whole_turf = thresholdFor(color.luma_sigma, color.texture_sigma);
     ball_classes_.patch_luma = static_cast<int>(color.luma_median) + whole_turf / 4;
     ball_classes_.patch_chroma = static_cast<float>(
         config.ball.patch_grey_ratio * std::hypot(color.r - 1.0 / 3.0, color.g - 1.0 / 3.0));
@@ -44,7 +39,7 @@ class SpotScanner {
     int i = kEdgeGap;
     while (i < line.n) {
       const int background = line.luma(i - kEdgeGap);
-      const int threshold = thresholdAt(background);
+      const int threshold = thresholdAt(background, line.v0 + line.dv * (i - kEdgeGap));
       if (line.luma(i) - background < threshold) {
         ++i;
         continue;
@@ -68,7 +63,8 @@ class SpotScanner {
     std::size_t kept = first;
     for (std::size_t i = first; i < spots_->size(); ++i) {
       const LineSpot spot = (*spots_)[i];
-      if (!continuesBeside(pixels, spot, shade_threshold_ / 2,  // the lower of the two
+      const int row = static_cast<int>(std::lround(spot.pixel.y()));
+      if (!continuesBeside(pixels, spot, thresholdAt(0, row) / 2,  // the shade's: the lower
                            RunBounds{color_, dark_luma_}, config_.continuation, buffer)) {
         reject(spot.pixel, SpotRejection::kCompactBlob, &LineSpotStats::compact_blob);
       } else if (onBall(pixels, spot, ballRadiusPx(spot), ball_classes_, config_.ball)) {
@@ -81,16 +77,57 @@ class SpotScanner {
   }
 
  private:
-  /// The contrast a line must have over turf whose luma varies by `sigma` (LineSpotConfig).
-  int thresholdFor(double sigma) const {
-    const double noise_sigma =
-        std::min(sigma, config_.max_sigma_over_texture * color_.texture_sigma);
+  /// The contrast a line must have over turf whose luma varies by `sigma` and whose texture
+  /// (FieldColor::texture_sigma) is `texture` (LineSpotConfig).
+  int thresholdFor(double sigma, double texture) const {
+    const double noise_sigma = std::min(sigma, config_.max_sigma_over_texture * texture);
     return static_cast<int>(std::max(config_.min_contrast, config_.noise_contrast * noise_sigma));
   }
 
-  /// The threshold for a run rising from turf of this luma: that of the turf's light level.
-  int thresholdAt(int background_luma) const {
-    return background_luma >= lit_split_ ? lit_threshold_ : shade_threshold_;
+  /// The thresholds of each image row, for the turf of either light level: the texture is the
+  /// whole turf's, or in far turf (LineSpotConfig::far_turf_m_per_px, judged at the middle of
+  /// its band of rows) its band's when that is lower.
+  void setThresholdsByRow(cv::Size image) {
+    const bool two_levels = color_.lit_split <= 255.f;
+    const int rows = std::max(1, image.height);
+    shade_by_row_.assign(static_cast<size_t>(rows), 0);
+    lit_by_row_.assign(static_cast<size_t>(rows), 0);
+    const int band_rows = color_.texture_band_rows > 0 ? color_.texture_band_rows : rows;
+    for (int first = 0, band = 0; first < rows; first += band_rows, ++band) {
+      const float middle = std::min(first + 0.5f * band_rows, rows - 0.5f);
+      double texture = color_.texture_sigma;
+      if (color_.texture_band_rows > 0 && band < FieldColor::kMaxTextureBands &&
+          farTurf(0.5f * image.width, middle)) {
+        texture = std::min(texture, static_cast<double>(color_.band_texture_sigma[band]));
+      }
+      const int one_level = thresholdFor(color_.luma_sigma, texture);
+      const int shade = two_levels ? thresholdFor(color_.shade_sigma, texture) : one_level;
+      // Light scales the turf's texture with its luma: the lit turf's spread is at least the
+      // shade's (a smaller one comes from something else in the lit level, such as a robot's
+      // green-tinted white close by).
+      const int lit =
+          two_levels ? std::max(shade, thresholdFor(color_.lit_sigma, texture)) : one_level;
+      const int last = std::min(rows, first + band_rows);
+      std::fill(shade_by_row_.begin() + first, shade_by_row_.begin() + last, shade);
+      std::fill(lit_by_row_.begin() + first, lit_by_row_.begin() + last, lit);
+    }
+  }
+
+  /// Whether the turf at pixel (u, v) is far (LineSpotConfig::far_turf_m_per_px); above the
+  /// horizon it is not turf.
+  bool farTurf(float u, float v) const {
+    if (config_.far_turf_m_per_px <= 0.0) return false;
+    const float across = widths_.metresPerPx(u, v).x();
+    return across > 0.f && widths_.expectedPx(u, v).x() > 0.f &&
+           across >= config_.far_turf_m_per_px;
+  }
+
+  /// The threshold for a run rising from turf of this luma in image row v: that of the turf's
+  /// light level there.
+  int thresholdAt(int background_luma, int v) const {
+    const int last = static_cast<int>(shade_by_row_.size()) - 1;
+    const size_t row = static_cast<size_t>(std::clamp(v, 0, last));
+    return background_luma >= lit_split_ ? lit_by_row_[row] : shade_by_row_[row];
   }
 
   /// The radius (px) a ball at the spot has in the image: its radius over the ground's metres
@@ -182,7 +219,8 @@ class SpotScanner {
     const int background_before = line.luma(before), background_after = line.luma(after);
     // Both sides must clear the threshold of the brighter side's light (the scan tested the
     // rise over `before` against its own).
-    const int threshold = thresholdAt(std::max(background_before, background_after));
+    const int threshold =
+        thresholdAt(std::max(background_before, background_after), line.v0 + line.dv * peak);
     if (peak_luma - background_after < threshold || peak_luma - background_before < threshold ||
         end >= line.n) {
       reject(line, peak, SpotRejection::kNotGreenBounded, &LineSpotStats::not_green_bounded);
@@ -249,8 +287,9 @@ class SpotScanner {
   const LineSpotConfig& config_;
   std::vector<LineSpot>* spots_;
   LineSpotStats* stats_;
-  int shade_threshold_ = 0, lit_threshold_ = 0;  ///< for the turf of each light level ...
-  int lit_split_ = 256;                          ///< ... split at this luma (FieldColor)
+  std::vector<int> shade_by_row_, lit_by_row_;  ///< per image row, for the turf of each
+                                                ///< light level ...
+  int lit_split_ = 256;                         ///< ... split at this luma (FieldColor)
   int dark_luma_ = 0;
   BallClasses ball_classes_{color_, 0, 0.f};
 };
@@ -312,7 +351,7 @@ std::vector<LineSpot> detectLineSpots(const cv::Mat& image, const FieldColor& co
                                       LineSpotStats* stats, const LineWidthModel* widest) {
   std::vector<LineSpot> spots;
   if (!color.valid || !boundary.found) return spots;
-  const SpotScanner scanner(color, widths, widest, config, &spots, stats);
+  const SpotScanner scanner(color, widths, widest, config, image.size(), &spots, stats);
   visitPixels(image, [&](const auto& pixels) { scanGrid(pixels, boundary, grid, scanner); });
   return spots;
 }

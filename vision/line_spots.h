@@ -60,6 +60,11 @@ struct LineSpotConfig {
                                         ///< varies much more over the image than between
                                         ///< neighbours varies with the light (gradients,
                                         ///< vignetting, shadows), which a 2-px rise does not see
+  double far_turf_m_per_px = 0.005;     ///< where a pixel covers at least this much ground across
+                                        ///< the view (m), the turf is far and its blades blur
+                                        ///< together: the rows of a band of such turf cap the
+                                        ///< noise sigma with the band's own texture where that is
+                                        ///< lower (FieldColor::band_texture_sigma; 0: never)
   double max_blend_width_px = 4.0;      ///< a run at most this wide (px, half maximum) with turf
                                         ///< on both sides is white when the light it adds over
                                         ///< that turf is: cameras keep chroma at half the luma's
