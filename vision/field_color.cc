@@ -224,23 +224,21 @@ void splitLightLevels(const LumaHistogram& histogram, const FieldColorConfig& co
   color->lit_sigma = histogram.robustSigma(split, 256);
 }
 
-/// FieldColor::band_texture_sigma: the field samples' luma changes to the sample below them
-/// (texture_sigma's measure) per band of image rows.
-void textureByBand(const std::vector<Sample>& samples, cv::Point2f centre, float radius,
-                   int image_rows, const FieldColorConfig& config, FieldColor* color) {
+/// FieldColor::band_texture_sigma: texture_sigma's measure (the luma change to the sample
+/// below) of the field samples per band of image rows.
+void textureByBand(const std::vector<const Sample*>& field_samples, int image_rows,
+                   const FieldColorConfig& config, FieldColor* color) {
   const int bands = std::clamp(config.texture_bands, 1, FieldColor::kMaxTextureBands);
   color->texture_band_rows = (image_rows + bands - 1) / bands;
   std::array<std::vector<float>, FieldColor::kMaxTextureBands> diffs;
-  for (const Sample& s : samples) {
-    if (s.diff_below < 0 || std::hypot(s.r - centre.x, s.g - centre.y) >= radius) continue;
-    diffs[static_cast<size_t>(std::min(bands - 1, s.row / color->texture_band_rows))].push_back(
-        static_cast<float>(s.diff_below));
+  for (const Sample* s : field_samples) {
+    const int band = std::min(bands - 1, s->row / color->texture_band_rows);
+    diffs[static_cast<size_t>(band)].push_back(static_cast<float>(s->diff_below));
   }
-  for (int b = 0; b < FieldColor::kMaxTextureBands; ++b) {
-    std::vector<float>& band = diffs[static_cast<size_t>(b)];
-    color->band_texture_sigma[static_cast<size_t>(b)] =
-        static_cast<int>(band.size()) >= config.min_band_samples ? quantile(&band, 0.5) / 0.954f
-                                                                 : color->texture_sigma;
+  for (size_t b = 0; b < diffs.size(); ++b) {
+    color->band_texture_sigma[b] = static_cast<int>(diffs[b].size()) >= config.min_band_samples
+                                       ? quantile(&diffs[b], 0.5) / 0.954f
+                                       : color->texture_sigma;
   }
 }
 
@@ -276,10 +274,13 @@ FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& star
   }
 
   std::vector<float> lumas, local_diffs;
+  std::vector<const Sample*> textured;  // field samples with a luma change below them
   for (const Sample& s : samples) {
     if (std::hypot(s.r - centre.x, s.g - centre.y) < radius) {
       lumas.push_back(s.luma);
-      if (s.diff_below >= 0) local_diffs.push_back(s.diff_below);
+      if (s.diff_below < 0) continue;
+      local_diffs.push_back(s.diff_below);
+      textured.push_back(&s);
     }
   }
   color.r = centre.x;
@@ -296,7 +297,7 @@ FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& star
   // their differences / sqrt 2 is the texture alone (the median |difference| of two Gaussian
   // samples is 0.954 sigma).
   color.texture_sigma = quantile(&local_diffs, 0.5) / 0.954f;
-  textureByBand(samples, centre, radius, image.rows, config, &color);
+  textureByBand(textured, image.rows, config, &color);
   color.min_luma = std::max(static_cast<float>(config.min_luma),
                             static_cast<float>(config.shadow_luma_ratio) * color.luma_median);
   const float grey_distance = greyDistance(centre);

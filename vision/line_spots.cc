@@ -35,11 +35,49 @@ class SpotScanner {
 
   template <typename Run>
   void scan(const Scanline<Run>& line) const {
+    // A row, or a frame whose rows all have the same thresholds: those of the first row.
+    if (line.dv == 0 || uniform_rows_) {
+      const size_t row = rowIndex(line.v0);
+      const int shade = shade_by_row_[row], lit = lit_by_row_[row];
+      scanWith(line, [&](int background, int) { return background >= lit_split_ ? lit : shade; });
+    } else {
+      scanWith(line, [&](int background, int i) {
+        return thresholdAt(background, line.v0 + line.dv * i);
+      });
+    }
+  }
+
+  /// Drops the spots from index `first` on whose run does not go on in the scanlines beside
+  /// them (line_continuation.h) or that lie on a ball (ball_spots.h). `buffer` must not be the
+  /// one the scanline was decoded into.
+  template <typename Pixels>
+  void dropNonLineSpots(const Pixels& pixels, std::size_t first, RunBuffer* buffer) const {
+    std::size_t kept = first;
+    for (std::size_t i = first; i < spots_->size(); ++i) {
+      const LineSpot spot = (*spots_)[i];
+      const int row = static_cast<int>(spot.pixel.y() + 0.5f);  // a pixel: not negative
+      if (!continuesBeside(pixels, spot, thresholdAt(0, row) / 2,  // the shade's: the lower
+                           RunBounds{color_, dark_luma_}, config_.continuation, buffer)) {
+        reject(spot.pixel, SpotRejection::kCompactBlob, &LineSpotStats::compact_blob);
+      } else if (onBall(pixels, spot, ballRadiusPx(spot), ball_classes_, config_.ball)) {
+        reject(spot.pixel, SpotRejection::kOnBall, &LineSpotStats::on_ball);
+      } else {
+        (*spots_)[kept++] = spot;
+      }
+    }
+    spots_->resize(kept);
+  }
+
+ private:
+  /// The scan of scan(): runs rising over the pixel two back by threshold(background luma,
+  /// index of the background pixel), each checked as a line's.
+  template <typename Run, typename Threshold>
+  void scanWith(const Scanline<Run>& line, Threshold&& threshold_at) const {
     constexpr int kEdgeGap = 2;  // compare with the pixel two back: tolerates one blurred pixel
     int i = kEdgeGap;
     while (i < line.n) {
       const int background = line.luma(i - kEdgeGap);
-      const int threshold = thresholdAt(background, line.v0 + line.dv * (i - kEdgeGap));
+      const int threshold = threshold_at(background, i - kEdgeGap);
       if (line.luma(i) - background < threshold) {
         ++i;
         continue;
@@ -55,28 +93,6 @@ class SpotScanner {
     }
   }
 
-  /// Drops the spots from index `first` on whose run does not go on in the scanlines beside
-  /// them (line_continuation.h) or that lie on a ball (ball_spots.h). `buffer` must not be the
-  /// one the scanline was decoded into.
-  template <typename Pixels>
-  void dropNonLineSpots(const Pixels& pixels, std::size_t first, RunBuffer* buffer) const {
-    std::size_t kept = first;
-    for (std::size_t i = first; i < spots_->size(); ++i) {
-      const LineSpot spot = (*spots_)[i];
-      const int row = static_cast<int>(std::lround(spot.pixel.y()));
-      if (!continuesBeside(pixels, spot, thresholdAt(0, row) / 2,  // the shade's: the lower
-                           RunBounds{color_, dark_luma_}, config_.continuation, buffer)) {
-        reject(spot.pixel, SpotRejection::kCompactBlob, &LineSpotStats::compact_blob);
-      } else if (onBall(pixels, spot, ballRadiusPx(spot), ball_classes_, config_.ball)) {
-        reject(spot.pixel, SpotRejection::kOnBall, &LineSpotStats::on_ball);
-      } else {
-        (*spots_)[kept++] = spot;
-      }
-    }
-    spots_->resize(kept);
-  }
-
- private:
   /// The contrast a line must have over turf whose luma varies by `sigma` and whose texture
   /// (FieldColor::texture_sigma) is `texture` (LineSpotConfig).
   int thresholdFor(double sigma, double texture) const {
@@ -111,6 +127,9 @@ class SpotScanner {
       std::fill(shade_by_row_.begin() + first, shade_by_row_.begin() + last, shade);
       std::fill(lit_by_row_.begin() + first, lit_by_row_.begin() + last, lit);
     }
+    uniform_rows_ =
+        std::equal(shade_by_row_.begin() + 1, shade_by_row_.end(), shade_by_row_.begin()) &&
+        std::equal(lit_by_row_.begin() + 1, lit_by_row_.end(), lit_by_row_.begin());
   }
 
   /// Whether the turf at pixel (u, v) is far (LineSpotConfig::far_turf_m_per_px); above the
@@ -125,9 +144,12 @@ class SpotScanner {
   /// The threshold for a run rising from turf of this luma in image row v: that of the turf's
   /// light level there.
   int thresholdAt(int background_luma, int v) const {
-    const int last = static_cast<int>(shade_by_row_.size()) - 1;
-    const size_t row = static_cast<size_t>(std::clamp(v, 0, last));
+    const size_t row = rowIndex(v);
     return background_luma >= lit_split_ ? lit_by_row_[row] : shade_by_row_[row];
+  }
+
+  size_t rowIndex(int v) const {
+    return static_cast<size_t>(std::clamp(v, 0, static_cast<int>(shade_by_row_.size()) - 1));
   }
 
   /// The radius (px) a ball at the spot has in the image: its radius over the ground's metres
@@ -289,6 +311,7 @@ class SpotScanner {
   LineSpotStats* stats_;
   std::vector<int> shade_by_row_, lit_by_row_;  ///< per image row, for the turf of each
                                                 ///< light level ...
+  bool uniform_rows_ = true;                    ///< ... the same in every row
   int lit_split_ = 256;                         ///< ... split at this luma (FieldColor)
   int dark_luma_ = 0;
   BallClasses ball_classes_{color_, 0, 0.f};
