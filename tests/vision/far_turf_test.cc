@@ -7,7 +7,6 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "vision/vision_pipeline.h"
 #include "vision_test_views.h"
 
 namespace houghloc {
@@ -47,26 +46,11 @@ cv::Mat withTextureFadingWithDistance(const cv::Mat& image) {
   return out;
 }
 
-struct FarFound {
-  testing::PointScore score;
-  size_t far = 0;
-};
-
-FarFound runWithFarTurf(const testing::TestView& view, const cv::Mat& image,
-                        double far_turf_m_per_px) {
+testing::VisionRun runWithFarTurf(const testing::TestView& view, const cv::Mat& image,
+                                  double far_turf_m_per_px) {
   VisionConfig config;
-  config.line_width_m = view.field.line_width;
   config.spots.far_turf_m_per_px = far_turf_m_per_px;
-  VisionPipeline pipeline(view.preset.intrinsics, config);
-  const VisionResult result = pipeline.process(image, view.preset.robot_T_camera);
-  std::vector<Eigen::Vector2d> points;
-  FarFound found;
-  for (const GroundPoint& p : result.ground.points) {
-    points.push_back(p.p_robot);
-    found.far += p.p_robot.norm() >= kFarRangeM;
-  }
-  found.score = testing::scorePoints(view, points);
-  return found;
+  return testing::runVision(view, image, config, kFarRangeM);
 }
 
 TEST(FarTurf, FaintFarLinesKeepTheirPoints) {
@@ -78,8 +62,9 @@ TEST(FarTurf, FaintFarLinesKeepTheirPoints) {
   const testing::TestView& view =
       testing::testView("nao-top", "spl", Pose2(-2.0, -1.0, 0.5), style);
   const cv::Mat image = withTextureFadingWithDistance(view.image);
-  const FarFound whole_turf = runWithFarTurf(view, image, 0.0),
-                 far_bands = runWithFarTurf(view, image, LineSpotConfig().far_turf_m_per_px);
+  const testing::VisionRun whole_turf = runWithFarTurf(view, image, 0.0),
+                           far_bands =
+                               runWithFarTurf(view, image, LineSpotConfig().far_turf_m_per_px);
   std::printf(
       "whole turf's texture: %zu points (%zu far), far bands' own: %zu (%zu), precision "
       "%.3f / %.3f\n",
@@ -98,8 +83,9 @@ TEST(FarTurf, EvenTextureKeepsOneThreshold) {
   style.noise_sigma = 6.0;
   const testing::TestView& view =
       testing::testView("nao-top", "spl", Pose2(-2.0, -1.0, 0.5), style);
-  const FarFound whole_turf = runWithFarTurf(view, view.image, 0.0),
-                 far_bands = runWithFarTurf(view, view.image, LineSpotConfig().far_turf_m_per_px);
+  const testing::VisionRun whole_turf = runWithFarTurf(view, view.image, 0.0),
+                           far_bands =
+                               runWithFarTurf(view, view.image, LineSpotConfig().far_turf_m_per_px);
   EXPECT_GT(whole_turf.score.points, 100u);
   EXPECT_EQ(far_bands.score.points, whole_turf.score.points);
   EXPECT_EQ(far_bands.score.median_error_m, whole_turf.score.median_error_m);

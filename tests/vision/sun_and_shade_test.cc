@@ -54,17 +54,13 @@ struct ShadeFound {
 
 ShadeFound runInLight(const testing::TestView& view, const cv::Mat& image, double min_light_ratio) {
   VisionConfig config;
-  config.line_width_m = view.field.line_width;
   config.field_color.min_light_ratio = min_light_ratio;
-  VisionPipeline pipeline(view.preset.intrinsics, config);
-  const VisionResult result = pipeline.process(image, view.preset.robot_T_camera);
-  std::vector<Eigen::Vector2d> points;
+  const testing::VisionRun run = testing::runVision(view, image, config);
   ShadeFound found;
-  for (const GroundPoint& p : result.ground.points) {
-    points.push_back(p.p_robot);
+  found.score = run.score;
+  for (const GroundPoint& p : run.points) {
     found.in_shade += inShade(static_cast<int>(p.pixel.x()), static_cast<int>(p.pixel.y()));
   }
-  found.score = testing::scorePoints(view, points);
   return found;
 }
 

@@ -9,26 +9,11 @@
 namespace houghloc {
 namespace {
 
-struct Found {
-  testing::PointScore score;
-  size_t far = 0;  ///< points beyond kFarM
-};
-constexpr double kFarM = 3.0;
-
-Found run(const testing::TestView& view, const cv::Mat& image, double max_blend_width_px) {
+testing::VisionRun runWithBlendWidth(const testing::TestView& view, const cv::Mat& image,
+                                     double max_blend_width_px) {
   VisionConfig config;
-  config.line_width_m = view.field.line_width;
   config.spots.max_blend_width_px = max_blend_width_px;
-  VisionPipeline pipeline(view.preset.intrinsics, config);
-  const VisionResult result = pipeline.process(image, view.preset.robot_T_camera);
-  std::vector<Eigen::Vector2d> points;
-  Found found;
-  for (const GroundPoint& p : result.ground.points) {
-    points.push_back(p.p_robot);
-    found.far += p.p_robot.norm() > kFarM ? 1 : 0;
-  }
-  found.score = testing::scorePoints(view, points);
-  return found;
+  return testing::runVision(view, image, config);  // far: 3 m or further
 }
 
 TEST(ThinLines, FarLinesWithTheTurfsChromaKeepTheirPoints) {
@@ -43,7 +28,8 @@ TEST(ThinLines, FarLinesWithTheTurfsChromaKeepTheirPoints) {
   std::vector<uchar> jpeg;
   cv::imencode(".jpg", view.image, jpeg, {cv::IMWRITE_JPEG_QUALITY, 70});
   const cv::Mat image = cv::imdecode(jpeg, cv::IMREAD_COLOR);
-  const Found peak_only = run(view, image, 0.0), added = run(view, image, 4.0);
+  const testing::VisionRun peak_only = runWithBlendWidth(view, image, 0.0),
+                           added = runWithBlendWidth(view, image, 4.0);
   // Measured: 37 points beyond 3 m with the peak's colour alone, 57 with the added light; every
   // point within 5 cm of a line either way.
   EXPECT_LE(peak_only.far, 45u);

@@ -16,8 +16,10 @@ const TestView& testView(const std::string& preset, const std::string& field, co
   static std::map<std::string, TestView> cache;
   std::ostringstream key;
   key << preset << '|' << field << '|' << pose.x << ',' << pose.y << ',' << pose.theta << '|'
-      << style.gradient << ',' << style.noise_sigma << ',' << style.seed << ','
-      << int(style.turf[0]) << int(style.turf[1]) << int(style.turf[2]);
+      << style.gradient << ',' << style.noise_sigma << ',' << style.seed;
+  for (const cv::Vec3b& colour : {style.turf, style.line, style.background}) {
+    key << ',' << int(colour[0]) << ' ' << int(colour[1]) << ' ' << int(colour[2]);
+  }
   auto it = cache.find(key.str());
   if (it != cache.end()) return it->second;
   TestView view;
@@ -45,6 +47,20 @@ PointScore scorePoints(const TestView& view, const std::vector<Eigen::Vector2d>&
   std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
   score.median_error_m = errors[errors.size() / 2];
   return score;
+}
+
+VisionRun runVision(const TestView& view, const cv::Mat& image, VisionConfig config, double far_m) {
+  config.line_width_m = view.field.line_width;
+  VisionPipeline pipeline(view.preset.intrinsics, config);
+  VisionRun run;
+  run.points = pipeline.process(image, view.preset.robot_T_camera).ground.points;
+  std::vector<Eigen::Vector2d> p_robot;
+  for (const GroundPoint& p : run.points) {
+    p_robot.push_back(p.p_robot);
+    run.far += p.p_robot.norm() >= far_m;
+  }
+  run.score = scorePoints(view, p_robot);
+  return run;
 }
 
 }  // namespace houghloc::testing

@@ -7,6 +7,7 @@
 #include "field_models/pose2.h"
 #include "synthetic_field_image.h"
 #include "vision/camera_presets.h"
+#include "vision/vision_pipeline.h"
 
 namespace houghloc::testing {
 
@@ -32,5 +33,16 @@ struct PointScore {
 };
 PointScore scorePoints(const TestView& view, const std::vector<Eigen::Vector2d>& p_robot,
                        double max_distance_m = 0.05);
+
+/// What the pipeline finds in `image` (a variant of view.image) with `config`, its line width
+/// set to the field's: the ground points, their score, and how many lie far_m or further from
+/// the robot.
+struct VisionRun {
+  std::vector<GroundPoint> points;
+  PointScore score;
+  size_t far = 0;
+};
+VisionRun runVision(const TestView& view, const cv::Mat& image, VisionConfig config,
+                    double far_m = 3.0);
 
 }  // namespace houghloc::testing
