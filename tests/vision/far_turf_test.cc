@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <opencv2/imgproc.hpp>
+#include <opencv2/core.hpp>
 #include <vector>
 
 #include "vision_test_views.h"
@@ -23,21 +23,16 @@ constexpr double kNearBrightness = 0.8;
 /// Points this far from the robot or further are far (m).
 constexpr double kFarRangeM = 3.0;
 
-/// Turf texture (blurred noise, blades and tufts a few px across) that is strong near the camera
+/// Turf texture (testing::turfTexture) that is strong near the camera
 /// and faint far away.
 cv::Mat withTextureFadingWithDistance(const cv::Mat& image) {
-  cv::Mat noise(image.size(), CV_32F);
-  cv::RNG rng(11);
-  rng.fill(noise, cv::RNG::NORMAL, 0.0, 1.0);
-  cv::GaussianBlur(noise, noise, cv::Size(), 2.0);
-  cv::Scalar mean, stddev;
-  cv::meanStdDev(noise, mean, stddev);
+  cv::Mat noise = testing::turfTexture(image.size(), 11);
   cv::Mat out, noise3;
   image.convertTo(out, CV_32FC3);
   for (int v = 0; v < noise.rows; ++v) {
     const double near_share = static_cast<double>(v) / (noise.rows - 1);
     const double sigma = kNearTextureSigma * (kFarShare + (1.0 - kFarShare) * near_share);
-    noise.row(v) *= sigma / stddev[0];
+    noise.row(v) *= sigma;
     out.row(v) *= kFarBrightness + (kNearBrightness - kFarBrightness) * near_share;
   }
   cv::merge(std::vector<cv::Mat>{noise, noise, noise}, noise3);

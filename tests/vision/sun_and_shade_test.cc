@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include <opencv2/imgproc.hpp>
+#include <opencv2/core.hpp>
 #include <vector>
 
 #include "vision/vision_pipeline.h"
@@ -17,16 +17,10 @@ constexpr double kTextureSigma = 14.0;
 constexpr double kOneLevel = 1e9;
 bool inShade(int u, int v) { return ((u + v / 2) / 90) % 2 == 1; }
 
-/// The turf's texture: blades and tufts a few px across (blurred noise of `sigma` grey levels),
+/// The turf's texture (testing::turfTexture) of `sigma` grey levels,
 /// which vary between samples 12 px apart far more than over the 2 px of a line's edge.
 cv::Mat withTexture(const cv::Mat& image, double sigma) {
-  cv::Mat noise(image.size(), CV_32F);
-  cv::RNG rng(7);
-  rng.fill(noise, cv::RNG::NORMAL, 0.0, 1.0);
-  cv::GaussianBlur(noise, noise, cv::Size(), 2.0);
-  cv::Scalar mean, stddev;
-  cv::meanStdDev(noise, mean, stddev);
-  noise *= sigma / stddev[0];
+  const cv::Mat noise = testing::turfTexture(image.size(), 7) * sigma;
   cv::Mat out;
   image.convertTo(out, CV_32FC3);
   cv::Mat noise3;

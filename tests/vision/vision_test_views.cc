@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <tuple>
 
@@ -47,6 +48,16 @@ PointScore scorePoints(const TestView& view, const std::vector<Eigen::Vector2d>&
   std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
   score.median_error_m = errors[errors.size() / 2];
   return score;
+}
+
+cv::Mat turfTexture(cv::Size size, int seed) {
+  cv::Mat noise(size, CV_32F);
+  cv::RNG rng(static_cast<uint64_t>(seed));
+  rng.fill(noise, cv::RNG::NORMAL, 0.0, 1.0);
+  cv::GaussianBlur(noise, noise, cv::Size(), 2.0);
+  cv::Scalar mean, stddev;
+  cv::meanStdDev(noise, mean, stddev);
+  return noise / stddev[0];
 }
 
 VisionRun runVision(const TestView& view, const cv::Mat& image, VisionConfig config, double far_m) {

@@ -34,6 +34,10 @@ struct PointScore {
 PointScore scorePoints(const TestView& view, const std::vector<Eigen::Vector2d>& p_robot,
                        double max_distance_m = 0.05);
 
+/// Turf texture: blades and tufts a few px across, as blurred Gaussian noise with a spread of
+/// one grey level (CV_32F of `size`; `seed` picks the noise).
+cv::Mat turfTexture(cv::Size size, int seed);
+
 /// What the pipeline finds in `image` (a variant of view.image) with `config`, its line width
 /// set to the field's: the ground points, their score, and how many lie far_m or further from
 /// the robot.
