@@ -35,7 +35,8 @@ class SpotScanner {
 
   template <typename Run>
   void scan(const Scanline<Run>& line) const {
-    // A row, or a frame whose rows all have the same thresholds: those of the first row.
+    // A row's pixels share its row's thresholds, and so do all pixels of a frame whose rows all
+    // have the same.
     if (line.dv == 0 || uniform_rows_) {
       const size_t row = rowIndex(line.v0);
       const int shade = shade_by_row_[row], lit = lit_by_row_[row];
