@@ -56,7 +56,7 @@ class SpotScanner {
     std::size_t kept = first;
     for (std::size_t i = first; i < spots_->size(); ++i) {
       const LineSpot spot = (*spots_)[i];
-      const int row = static_cast<int>(spot.pixel.y() + 0.5f);  // a pixel: not negative
+      const int row = static_cast<int>(spot.pixel.y() + 0.5f);     // a pixel: not negative
       if (!continuesBeside(pixels, spot, thresholdAt(0, row) / 2,  // the shade's: the lower
                            RunBounds{color_, dark_luma_}, config_.continuation, buffer)) {
         reject(spot.pixel, SpotRejection::kCompactBlob, &LineSpotStats::compact_blob);
