@@ -224,6 +224,11 @@ void splitLightLevels(const LumaHistogram& histogram, const FieldColorConfig& co
   color->lit_sigma = histogram.robustSigma(split, 256);
 }
 
+/// The turf's texture from the |luma changes| between neighbouring samples: the spread of their
+/// differences / sqrt 2 (the median |difference| of two Gaussian samples is 0.954 sigma).
+/// Reorders `diffs`.
+float textureSigma(std::vector<float>* diffs) { return quantile(diffs, 0.5) / 0.954f; }
+
 /// FieldColor::band_texture_sigma: texture_sigma's measure (the luma change to the sample
 /// below) of the field samples per band of image rows.
 void textureByBand(const std::vector<const Sample*>& field_samples, int image_rows,
@@ -237,7 +242,7 @@ void textureByBand(const std::vector<const Sample*>& field_samples, int image_ro
   }
   for (size_t b = 0; b < diffs.size(); ++b) {
     color->band_texture_sigma[b] = static_cast<int>(diffs[b].size()) >= config.min_band_samples
-                                       ? quantile(&diffs[b], 0.5) / 0.954f
+                                       ? textureSigma(&diffs[b])
                                        : color->texture_sigma;
   }
 }
@@ -293,10 +298,9 @@ FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& star
   color.luma_sigma = histogram.robustSigma(0, 256);
   splitLightLevels(histogram, config, &color);
   // Neighbouring samples in a column, 12 px apart, differ by the turf's texture and noise but
-  // hardly by the light (gradients, vignetting, shadows change over tens of px): the spread of
-  // their differences / sqrt 2 is the texture alone (the median |difference| of two Gaussian
-  // samples is 0.954 sigma).
-  color.texture_sigma = quantile(&local_diffs, 0.5) / 0.954f;
+  // hardly by the light (gradients, vignetting, shadows change over tens of px): their
+  // differences measure the texture alone.
+  color.texture_sigma = textureSigma(&local_diffs);
   textureByBand(textured, image.rows, config, &color);
   color.min_luma = std::max(static_cast<float>(config.min_luma),
                             static_cast<float>(config.shadow_luma_ratio) * color.luma_median);
