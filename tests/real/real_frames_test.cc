@@ -108,7 +108,7 @@ TEST_F(RealFramesTest, MaskedImages) {
       // (LineSpotConfig::max_blend_width_px; 0.79 / 0.38 by the peak's colour alone); the far
       // turf's own texture sets their threshold (LineSpotConfig::far_turf_m_per_px; 0.84 / 0.40
       // with the whole turf's, whose near texture and far-to-near gradient gave 44 grey levels
-      // against the halfway line's 33-40)
+      // against the far halfway line's 38-43 at column 100)
       {"torso21_kid_800x600", {0.9, 0.55}},  // 0.91 / 0.57 measured
       // hard sunlight: 1 of its 13 points lies on a line (0.08 / 0.04 measured with 12 points
       // before the thin lines' added light; the new point lies in the sun, off the line)
