@@ -7,6 +7,7 @@
 #include "vision/line_continuation.h"
 #include "vision/pixel_access.h"
 #include "vision/scanline.h"
+#include "vision/spot_thresholds.h"
 
 namespace houghloc {
 namespace {
@@ -20,12 +21,11 @@ class SpotScanner {
         widths_(widths),
         widest_(widest),
         config_(config),
+        thresholds_(color, widths, config, image),
         spots_(spots),
         stats_(stats) {
-    lit_split_ = static_cast<int>(std::ceil(color.lit_split));
-    setThresholdsByRow(image);
     dark_luma_ = static_cast<int>(config.dark_luma_ratio * color.luma_median);
-    const int whole_turf = thresholdFor(color.luma_sigma, color.texture_sigma);
+    const int whole_turf = noiseThreshold(color.luma_sigma, color.texture_sigma, config);
     ball_classes_.patch_luma = static_cast<int>(color.luma_median) + whole_turf / 4;
     ball_classes_.patch_chroma = static_cast<float>(
         config.ball.patch_grey_ratio * std::hypot(color.r - 1.0 / 3.0, color.g - 1.0 / 3.0));
@@ -35,15 +35,15 @@ class SpotScanner {
 
   template <typename Run>
   void scan(const Scanline<Run>& line) const {
-    // A row's pixels share its row's thresholds, and so do all pixels of a frame whose rows all
-    // have the same.
-    if (line.dv == 0 || uniform_rows_) {
-      const size_t row = rowIndex(line.v0);
-      const int shade = shade_by_row_[row], lit = lit_by_row_[row];
-      scanWith(line, [&](int background, int) { return background >= lit_split_ ? lit : shade; });
+    // The scan asks the least a line's run may rise (that of a saturated peak; check() tests
+    // the peak). A row's pixels share its row's thresholds, and so do all pixels of a frame whose
+    // rows all have the same.
+    if (line.dv == 0 || thresholds_.uniform()) {
+      const SpotThresholds::ByLuma& by_luma = thresholds_.saturatedByLuma(line.v0);
+      scanWith(line, [&](int background, int) { return by_luma[static_cast<size_t>(background)]; });
     } else {
       scanWith(line, [&](int background, int i) {
-        return thresholdAt(background, line.v0 + line.dv * i);
+        return thresholds_.saturated(background, line.v0 + line.dv * i);
       });
     }
   }
@@ -56,8 +56,8 @@ class SpotScanner {
     std::size_t kept = first;
     for (std::size_t i = first; i < spots_->size(); ++i) {
       const LineSpot spot = (*spots_)[i];
-      const int row = static_cast<int>(spot.pixel.y() + 0.5f);     // a pixel: not negative
-      if (!continuesBeside(pixels, spot, thresholdAt(0, row) / 2,  // the shade's: the lower
+      const int row = static_cast<int>(spot.pixel.y() + 0.5f);        // a pixel: not negative
+      if (!continuesBeside(pixels, spot, thresholds_.shade(row) / 2,  // the lower level's
                            RunBounds{color_, dark_luma_}, config_.continuation, buffer)) {
         reject(spot.pixel, SpotRejection::kCompactBlob, &LineSpotStats::compact_blob);
       } else if (onBall(pixels, spot, ballRadiusPx(spot), ball_classes_, config_.ball)) {
@@ -92,65 +92,6 @@ class SpotScanner {
       check(line, i - kEdgeGap, peak, end);
       i = end + 1;
     }
-  }
-
-  /// The contrast a line must have over turf whose luma varies by `sigma` and whose texture
-  /// (FieldColor::texture_sigma) is `texture` (LineSpotConfig).
-  int thresholdFor(double sigma, double texture) const {
-    const double noise_sigma = std::min(sigma, config_.max_sigma_over_texture * texture);
-    return static_cast<int>(std::max(config_.min_contrast, config_.noise_contrast * noise_sigma));
-  }
-
-  /// The thresholds of each image row, for the turf of either light level: the texture is the
-  /// whole turf's, or in far turf (LineSpotConfig::far_turf_m_per_px, judged at the middle of
-  /// its band of rows) its band's when that is lower.
-  void setThresholdsByRow(cv::Size image) {
-    const bool two_levels = color_.lit_split <= 255.f;
-    const int rows = std::max(1, image.height);
-    shade_by_row_.assign(static_cast<size_t>(rows), 0);
-    lit_by_row_.assign(static_cast<size_t>(rows), 0);
-    const int band_rows = color_.texture_band_rows > 0 ? color_.texture_band_rows : rows;
-    for (int first = 0, band = 0; first < rows; first += band_rows, ++band) {
-      const float middle = std::min(first + 0.5f * band_rows, rows - 0.5f);
-      double texture = color_.texture_sigma;
-      if (color_.texture_band_rows > 0 && band < FieldColor::kMaxTextureBands &&
-          farTurf(0.5f * image.width, middle)) {
-        texture = std::min(texture, static_cast<double>(color_.band_texture_sigma[band]));
-      }
-      const int one_level = thresholdFor(color_.luma_sigma, texture);
-      const int shade = two_levels ? thresholdFor(color_.shade_sigma, texture) : one_level;
-      // Light scales the turf's texture with its luma: the lit turf's spread is at least the
-      // shade's (a smaller one comes from something else in the lit level, such as a robot's
-      // green-tinted white close by).
-      const int lit =
-          two_levels ? std::max(shade, thresholdFor(color_.lit_sigma, texture)) : one_level;
-      const int last = std::min(rows, first + band_rows);
-      std::fill(shade_by_row_.begin() + first, shade_by_row_.begin() + last, shade);
-      std::fill(lit_by_row_.begin() + first, lit_by_row_.begin() + last, lit);
-    }
-    uniform_rows_ =
-        std::equal(shade_by_row_.begin() + 1, shade_by_row_.end(), shade_by_row_.begin()) &&
-        std::equal(lit_by_row_.begin() + 1, lit_by_row_.end(), lit_by_row_.begin());
-  }
-
-  /// Whether the turf at pixel (u, v) is far (LineSpotConfig::far_turf_m_per_px); above the
-  /// horizon it is not turf.
-  bool farTurf(float u, float v) const {
-    if (config_.far_turf_m_per_px <= 0.0) return false;
-    const float across = widths_.metresPerPx(u, v).x();
-    return across > 0.f && widths_.expectedPx(u, v).x() > 0.f &&
-           across >= config_.far_turf_m_per_px;
-  }
-
-  /// The threshold for a run rising from turf of this luma in image row v: that of the turf's
-  /// light level there.
-  int thresholdAt(int background_luma, int v) const {
-    const size_t row = rowIndex(v);
-    return background_luma >= lit_split_ ? lit_by_row_[row] : shade_by_row_[row];
-  }
-
-  size_t rowIndex(int v) const {
-    return static_cast<size_t>(std::clamp(v, 0, static_cast<int>(shade_by_row_.size()) - 1));
   }
 
   /// The radius (px) a ball at the spot has in the image: its radius over the ground's metres
@@ -242,8 +183,8 @@ class SpotScanner {
     const int background_before = line.luma(before), background_after = line.luma(after);
     // Both sides must clear the threshold of the brighter side's light (the scan tested the
     // rise over `before` against its own).
-    const int threshold =
-        thresholdAt(std::max(background_before, background_after), line.v0 + line.dv * peak);
+    const int threshold = thresholds_.forPeak(std::max(background_before, background_after),
+                                              line.v0 + line.dv * peak, peak_luma);
     if (peak_luma - background_after < threshold || peak_luma - background_before < threshold ||
         end >= line.n) {
       reject(line, peak, SpotRejection::kNotGreenBounded, &LineSpotStats::not_green_bounded);
@@ -308,12 +249,9 @@ class SpotScanner {
   const LineWidthModel& widths_;
   const LineWidthModel* widest_;  ///< none: the pose's pitch is taken as exact
   const LineSpotConfig& config_;
+  SpotThresholds thresholds_;
   std::vector<LineSpot>* spots_;
   LineSpotStats* stats_;
-  std::vector<int> shade_by_row_, lit_by_row_;  ///< per image row, for the turf of each
-                                                ///< light level ...
-  bool uniform_rows_ = true;                    ///< ... the same in every row
-  int lit_split_ = 256;                         ///< ... split at this luma (FieldColor)
   int dark_luma_ = 0;
   BallClasses ball_classes_{color_, 0, 0.f};
 };

@@ -65,12 +65,19 @@ struct LineSpotConfig {
                                         ///< together: the rows of a band of such turf cap the
                                         ///< noise sigma with the band's own texture where that is
                                         ///< lower (FieldColor::band_texture_sigma; 0: never)
-  double max_blend_width_px = 4.0;      ///< a run at most this wide (px, half maximum) with turf
-                                        ///< on both sides is white when the light it adds over
-                                        ///< that turf is: cameras keep chroma at half the luma's
-                                        ///< resolution (YUYV, JPEG 4:2:0), so a thin line takes
-                                        ///< the turf's chroma and only its luma rises (0: off)
-  double min_width_ratio = 0.4;         ///< measured / expected width; worn or anti-aliased lines
+  // Saturated light (SpotThresholds): a line cannot rise above the sensor's 255, so on bright
+  // turf of luma b a run whose peak reaches headroom_min_peak_luma is asked at most
+  // headroom_share x (255 - b), but not less than headroom_min_textures x the row's texture
+  // (turf near saturation reaches 255 by its own texture). 0 share: no cap.
+  double headroom_share = 0.75;
+  double headroom_min_textures = 3.0;
+  int headroom_min_peak_luma = 250;
+  double max_blend_width_px = 4.0;  ///< a run at most this wide (px, half maximum) with turf
+                                    ///< on both sides is white when the light it adds over
+                                    ///< that turf is: cameras keep chroma at half the luma's
+                                    ///< resolution (YUYV, JPEG 4:2:0), so a thin line takes
+                                    ///< the turf's chroma and only its luma rises (0: off)
+  double min_width_ratio = 0.4;     ///< measured / expected width; worn or anti-aliased lines
   double max_width_ratio = 1.7;     ///< above: robots, feet, ball, posts (the other scan direction
                                     ///< catches lines crossing this one obliquely)
   double width_tolerance_px = 2.0;  ///< added to the allowed width: blur, anti-aliasing

@@ -1,0 +1,87 @@
+#include "vision/spot_thresholds.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "vision/line_spots.h"
+
+namespace houghloc {
+
+SpotThresholds::SpotThresholds(const FieldColor& color, const LineWidthModel& widths,
+                               const LineSpotConfig& config, cv::Size image)
+    : color_(color), widths_(widths), config_(config) {
+  lit_split_ = static_cast<int>(std::ceil(color.lit_split));
+  const bool two_levels = color.lit_split <= 255.f;
+  const int rows = std::max(1, image.height);
+  band_of_row_.assign(static_cast<size_t>(rows), 0);
+  // The whole turf's texture, or in far turf (judged at the middle of its band of rows) its
+  // band's when that is lower.
+  const int band_rows = color.texture_band_rows > 0 ? color.texture_band_rows : rows;
+  for (int first = 0, band = 0; first < rows; first += band_rows, ++band) {
+    const float middle = std::min(first + 0.5f * band_rows, rows - 0.5f);
+    double texture = color.texture_sigma;
+    if (color.texture_band_rows > 0 && band < FieldColor::kMaxTextureBands &&
+        farTurf(0.5f * image.width, middle)) {
+      texture = std::min(texture, static_cast<double>(color.band_texture_sigma[band]));
+    }
+    const Band thresholds = bandFor(texture, two_levels);
+    const auto same = [&](const Band& b) {
+      return b.shade == thresholds.shade && b.lit == thresholds.lit &&
+             b.saturated == thresholds.saturated;
+    };
+    auto known = std::find_if(bands_.begin(), bands_.end(), same);
+    if (known == bands_.end()) known = bands_.insert(bands_.end(), thresholds);
+    std::fill(band_of_row_.begin() + first,
+              band_of_row_.begin() + std::min(rows, first + band_rows),
+              static_cast<uint8_t>(known - bands_.begin()));
+  }
+}
+
+int SpotThresholds::forPeak(int turf_luma, int v, int peak_luma) const {
+  const Band& band = bandOf(v);
+  if (peak_luma >= config_.headroom_min_peak_luma) {
+    return band.saturated[static_cast<size_t>(turf_luma)];
+  }
+  return turf_luma >= lit_split_ ? band.lit : band.shade;
+}
+
+const SpotThresholds::Band& SpotThresholds::bandOf(int v) const {
+  const int row = std::clamp(v, 0, static_cast<int>(band_of_row_.size()) - 1);
+  return bands_[band_of_row_[static_cast<size_t>(row)]];
+}
+
+bool SpotThresholds::farTurf(float u, float v) const {
+  if (config_.far_turf_m_per_px <= 0.0) return false;
+  const float across = widths_.metresPerPx(u, v).x();
+  return across > 0.f && widths_.expectedPx(u, v).x() > 0.f && across >= config_.far_turf_m_per_px;
+}
+
+int noiseThreshold(double sigma, double texture, const LineSpotConfig& config) {
+  const double noise_sigma = std::min(sigma, config.max_sigma_over_texture * texture);
+  return static_cast<int>(std::max(config.min_contrast, config.noise_contrast * noise_sigma));
+}
+
+SpotThresholds::Band SpotThresholds::bandFor(double texture, bool two_levels) const {
+  Band band;
+  const int one_level = noiseThreshold(color_.luma_sigma, texture, config_);
+  band.shade = two_levels ? noiseThreshold(color_.shade_sigma, texture, config_) : one_level;
+  // Light scales the turf's texture with its luma: the lit turf's spread is at least the
+  // shade's (a smaller one comes from something else in the lit level, such as a robot's
+  // green-tinted white close by).
+  band.lit = two_levels ? std::max(band.shade, noiseThreshold(color_.lit_sigma, texture, config_))
+                        : one_level;
+  // Turf near saturation reaches 255 by its own texture: the cap stops at the texture's floor.
+  const double floor = config_.headroom_min_textures * texture;
+  for (int luma = 0; luma < 256; ++luma) {
+    const int level = luma >= lit_split_ ? band.lit : band.shade;
+    const double cap =
+        config_.headroom_share > 0.0
+            ? std::max({config_.min_contrast, floor, config_.headroom_share * (255 - luma)})
+            : level;
+    band.saturated[static_cast<size_t>(luma)] =
+        static_cast<int16_t>(std::min(level, static_cast<int>(cap)));
+  }
+  return band;
+}
+
+}  // namespace houghloc
