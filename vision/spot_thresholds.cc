@@ -6,12 +6,27 @@
 #include "vision/line_spots.h"
 
 namespace houghloc {
+namespace {
+
+/// Whether the turf at pixel (u, v) is far (LineSpotConfig::far_turf_m_per_px); above the
+/// horizon it is not turf.
+bool farTurf(const LineWidthModel& widths, const LineSpotConfig& config, float u, float v) {
+  if (config.far_turf_m_per_px <= 0.0) return false;
+  const float across = widths.metresPerPx(u, v).x();
+  return across > 0.f && widths.expectedPx(u, v).x() > 0.f && across >= config.far_turf_m_per_px;
+}
+
+}  // namespace
+
+int noiseThreshold(double sigma, double texture, const LineSpotConfig& config) {
+  const double noise_sigma = std::min(sigma, config.max_sigma_over_texture * texture);
+  return static_cast<int>(std::max(config.min_contrast, config.noise_contrast * noise_sigma));
+}
 
 SpotThresholds::SpotThresholds(const FieldColor& color, const LineWidthModel& widths,
                                const LineSpotConfig& config, cv::Size image)
-    : color_(color), widths_(widths), config_(config) {
-  lit_split_ = static_cast<int>(std::ceil(color.lit_split));
-  const bool two_levels = color.lit_split <= 255.f;
+    : lit_split_(static_cast<int>(std::ceil(color.lit_split))),
+      min_saturated_luma_(config.headroom_min_peak_luma) {
   const int rows = std::max(1, image.height);
   band_of_row_.assign(static_cast<size_t>(rows), 0);
   // The whole turf's texture, or in far turf (judged at the middle of its band of rows) its
@@ -21,10 +36,10 @@ SpotThresholds::SpotThresholds(const FieldColor& color, const LineWidthModel& wi
     const float middle = std::min(first + 0.5f * band_rows, rows - 0.5f);
     double texture = color.texture_sigma;
     if (color.texture_band_rows > 0 && band < FieldColor::kMaxTextureBands &&
-        farTurf(0.5f * image.width, middle)) {
+        farTurf(widths, config, 0.5f * image.width, middle)) {
       texture = std::min(texture, static_cast<double>(color.band_texture_sigma[band]));
     }
-    const Band thresholds = bandFor(texture, two_levels);
+    const Band thresholds = bandFor(color, config, texture);
     const auto same = [&](const Band& b) {
       return b.shade == thresholds.shade && b.lit == thresholds.lit &&
              b.saturated == thresholds.saturated;
@@ -39,7 +54,7 @@ SpotThresholds::SpotThresholds(const FieldColor& color, const LineWidthModel& wi
 
 int SpotThresholds::forPeak(int turf_luma, int v, int peak_luma) const {
   const Band& band = bandOf(v);
-  if (peak_luma >= config_.headroom_min_peak_luma) {
+  if (peak_luma >= min_saturated_luma_) {
     return band.saturated[static_cast<size_t>(turf_luma)];
   }
   return turf_luma >= lit_split_ ? band.lit : band.shade;
@@ -50,33 +65,24 @@ const SpotThresholds::Band& SpotThresholds::bandOf(int v) const {
   return bands_[band_of_row_[static_cast<size_t>(row)]];
 }
 
-bool SpotThresholds::farTurf(float u, float v) const {
-  if (config_.far_turf_m_per_px <= 0.0) return false;
-  const float across = widths_.metresPerPx(u, v).x();
-  return across > 0.f && widths_.expectedPx(u, v).x() > 0.f && across >= config_.far_turf_m_per_px;
-}
-
-int noiseThreshold(double sigma, double texture, const LineSpotConfig& config) {
-  const double noise_sigma = std::min(sigma, config.max_sigma_over_texture * texture);
-  return static_cast<int>(std::max(config.min_contrast, config.noise_contrast * noise_sigma));
-}
-
-SpotThresholds::Band SpotThresholds::bandFor(double texture, bool two_levels) const {
+SpotThresholds::Band SpotThresholds::bandFor(const FieldColor& color, const LineSpotConfig& config,
+                                             double texture) const {
+  const bool two_levels = color.lit_split <= 255.f;
   Band band;
-  const int one_level = noiseThreshold(color_.luma_sigma, texture, config_);
-  band.shade = two_levels ? noiseThreshold(color_.shade_sigma, texture, config_) : one_level;
+  const int one_level = noiseThreshold(color.luma_sigma, texture, config);
+  band.shade = two_levels ? noiseThreshold(color.shade_sigma, texture, config) : one_level;
   // Light scales the turf's texture with its luma: the lit turf's spread is at least the
   // shade's (a smaller one comes from something else in the lit level, such as a robot's
   // green-tinted white close by).
-  band.lit = two_levels ? std::max(band.shade, noiseThreshold(color_.lit_sigma, texture, config_))
+  band.lit = two_levels ? std::max(band.shade, noiseThreshold(color.lit_sigma, texture, config))
                         : one_level;
   // Turf near saturation reaches 255 by its own texture: the cap stops at the texture's floor.
-  const double floor = config_.headroom_min_textures * texture;
+  const double floor = config.headroom_min_textures * texture;
   for (int luma = 0; luma < 256; ++luma) {
     const int level = luma >= lit_split_ ? band.lit : band.shade;
     const double cap =
-        config_.headroom_share > 0.0
-            ? std::max({config_.min_contrast, floor, config_.headroom_share * (255 - luma)})
+        config.headroom_share > 0.0
+            ? std::max({config.min_contrast, floor, config.headroom_share * (255 - luma)})
             : level;
     band.saturated[static_cast<size_t>(luma)] =
         static_cast<int16_t>(std::min(level, static_cast<int>(cap)));

@@ -51,15 +51,10 @@ class SpotThresholds {
   };
 
   const Band& bandOf(int v) const;
-  /// Whether the turf at pixel (u, v) is far (LineSpotConfig::far_turf_m_per_px); above the
-  /// horizon it is not turf.
-  bool farTurf(float u, float v) const;
-  Band bandFor(double texture, bool two_levels) const;
+  Band bandFor(const FieldColor& color, const LineSpotConfig& config, double texture) const;
 
-  const FieldColor& color_;
-  const LineWidthModel& widths_;
-  const LineSpotConfig& config_;
-  int lit_split_ = 256;
+  int lit_split_ = 256;               ///< FieldColor::lit_split, rounded up
+  int min_saturated_luma_ = 0;        ///< LineSpotConfig::headroom_min_peak_luma
   std::vector<Band> bands_;           ///< one, or one per band of FieldColor texture rows
   std::vector<uint8_t> band_of_row_;  ///< index into bands_ per image row
 };
