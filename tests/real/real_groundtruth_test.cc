@@ -171,17 +171,11 @@ TEST(RealGroundTruthFrames, VisibleLineCoverageAtTheRecordedPose) {
   // seven frames (measured 0.594, the column scan 0.425; 0.360 before the sunlit lines had
   // points; black1_point4_top's 86 points lie beside the lines at the recorded pitch, 0.09
   // there). The far samples of the uncorrected frames are missed for the pitch bias above.
-  long visible = 0, covered = 0, baseline_covered = 0;
-  for (const GroundTruthFrameReport& r : physarFrames()) {
-    visible += r.houghloc.visible_samples;
-    covered += r.houghloc.covered_samples;
-    baseline_covered += r.baseline.covered_samples;
-  }
-  ASSERT_GT(visible, 0);
-  const double coverage = static_cast<double>(covered) / visible;
+  const PooledCoverage all = pooledCoverage(physarFrames());
+  ASSERT_GT(all.visible, 0);
   std::printf("coverage over the seven frames: %.3f (%ld of %ld samples), baseline %.3f\n",
-              coverage, covered, visible, static_cast<double>(baseline_covered) / visible);
-  EXPECT_GE(coverage, 0.55);
+              all.share(), all.covered, all.visible, all.baselineShare());
+  EXPECT_GE(all.share(), 0.55);
 }
 
 std::vector<GlobalCheckFrame> globalCheck(bool add_fit_dpitch, bool pose_correction,

@@ -11,6 +11,16 @@ std::string stem(const std::string& image) { return std::filesystem::path(image)
 
 }  // namespace
 
+PooledCoverage pooledCoverage(const std::vector<GroundTruthFrameReport>& frames) {
+  PooledCoverage pooled;
+  for (const GroundTruthFrameReport& f : frames) {
+    pooled.visible += f.houghloc.visible_samples;
+    pooled.covered += f.houghloc.covered_samples;
+    pooled.baseline_covered += f.baseline.covered_samples;
+  }
+  return pooled;
+}
+
 void printGroundTruthFrames(const std::vector<GroundTruthFrameReport>& frames) {
   std::printf(
       "\nframes with lines and a ground-truth pose (recorded camera pose; median: point to "
@@ -18,21 +28,17 @@ void printGroundTruthFrames(const std::vector<GroundTruthFrameReport>& frames) {
       "line samples within 5 m in view with a point within 0.15 m)\n");
   std::printf("%-28s | %6s %7s %6s %6s | %8s %7s %6s %6s\n", "frame", "points", "median", "beyond",
               "cover", "base-pts", "median", "beyond", "cover");
-  long visible = 0, covered = 0, baseline_covered = 0;
   for (const GroundTruthFrameReport& f : frames) {
     const GroundTruthMetrics& h = f.houghloc;
     const GroundTruthMetrics& b = f.baseline;
     std::printf("%-28s | %6d %7.3f %6.3f %6.3f | %8d %7.3f %6.3f %6.3f\n", stem(f.image).c_str(),
                 h.points, h.median_distance_m, h.beyond_goal_share, h.coverage, b.points,
                 b.median_distance_m, b.beyond_goal_share, b.coverage);
-    visible += h.visible_samples;
-    covered += h.covered_samples;
-    baseline_covered += b.covered_samples;
   }
-  if (visible > 0) {
+  const PooledCoverage all = pooledCoverage(frames);
+  if (all.visible > 0) {
     std::printf("all %zu frames: cover %.3f (%ld of %ld samples), baseline %.3f\n", frames.size(),
-                static_cast<double>(covered) / visible, covered, visible,
-                static_cast<double>(baseline_covered) / visible);
+                all.share(), all.covered, all.visible, all.baselineShare());
   }
 }
 
