@@ -57,7 +57,7 @@ int SpotThresholds::forPeak(int turf_luma, int v, int peak_luma) const {
   if (peak_luma >= min_saturated_luma_) {
     return band.saturated[static_cast<size_t>(turf_luma)];
   }
-  return turf_luma >= lit_split_ ? band.lit : band.shade;
+  return level(band, turf_luma);
 }
 
 const SpotThresholds::Band& SpotThresholds::bandOf(int v) const {
@@ -79,13 +79,13 @@ SpotThresholds::Band SpotThresholds::bandFor(const FieldColor& color, const Line
   // Turf near saturation reaches 255 by its own texture: the cap stops at the texture's floor.
   const double floor = config.headroom_min_textures * texture;
   for (int luma = 0; luma < 256; ++luma) {
-    const int level = luma >= lit_split_ ? band.lit : band.shade;
+    const int by_level = level(band, luma);
     const double cap =
         config.headroom_share > 0.0
             ? std::max({config.min_contrast, floor, config.headroom_share * (255 - luma)})
-            : level;
+            : by_level;
     band.saturated[static_cast<size_t>(luma)] =
-        static_cast<int16_t>(std::min(level, static_cast<int>(cap)));
+        static_cast<int16_t>(std::min(by_level, static_cast<int>(cap)));
   }
   return band;
 }

@@ -49,6 +49,10 @@ class SpotThresholds {
     int shade = 0, lit = 0;  ///< for turf below and at or above lit_split
     ByLuma saturated{};      ///< ... capped by the headroom (not below the texture's floor)
   };
+  /// The band's threshold for turf of this luma, by its light level.
+  int level(const Band& band, int turf_luma) const {
+    return turf_luma >= lit_split_ ? band.lit : band.shade;
+  }
 
   const Band& bandOf(int v) const;
   Band bandFor(const FieldColor& color, const LineSpotConfig& config, double texture) const;
