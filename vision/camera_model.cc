@@ -27,6 +27,24 @@ bool allFinite(const Eigen::Vector3d& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
 }
 
+/// Angles at which computeHorizon() samples the horizontal directions: a_i = -pi + 2 pi i / n.
+constexpr int kHorizonSamples = 2048;
+double horizonSampleAngle(int i) { return -kPi + 2.0 * kPi * i / kHorizonSamples; }
+
+/// (cos a_i, sin a_i) for i = 0..kHorizonSamples: the same for every pose, so computed once
+/// (the sines and cosines were a third of computeHorizon()'s cost).
+const std::vector<Eigen::Vector2d>& horizonSampleDirections() {
+  static const std::vector<Eigen::Vector2d> directions = [] {
+    std::vector<Eigen::Vector2d> out(kHorizonSamples + 1);
+    for (int i = 0; i <= kHorizonSamples; ++i) {
+      const double a = horizonSampleAngle(i);
+      out[i] = Eigen::Vector2d(std::cos(a), std::sin(a));
+    }
+    return out;
+  }();
+  return directions;
+}
+
 }  // namespace
 
 void validateCameraIntrinsics(const CameraIntrinsics& in) {
@@ -135,16 +153,21 @@ void CameraModel::computeHorizon() {
     return;
   }
   const cv::Matx33d& k = intrinsics_.camera_matrix;
-  auto pixelOf = [&](double a) -> std::optional<Eigen::Vector2d> {
+  // The pixel of the horizontal direction (cos a, sin a, 0) given as `direction`.
+  auto pixelOfDirection = [&](const Eigen::Vector2d& direction) -> std::optional<Eigen::Vector2d> {
     const Eigen::Vector3d d_optical =
-        robot_R_optical_.transpose() * Eigen::Vector3d(std::cos(a), std::sin(a), 0.0);
+        robot_R_optical_.transpose() * Eigen::Vector3d(direction.x(), direction.y(), 0.0);
     const auto n = lens_.distort(d_optical);
     if (!n) return std::nullopt;
     return Eigen::Vector2d(k(0, 0) * n->x() + k(0, 2), k(1, 1) * n->y() + k(1, 2));
   };
-  const int samples = 2048;
+  auto pixelOf = [&](double a) {
+    return pixelOfDirection(Eigen::Vector2d(std::cos(a), std::sin(a)));
+  };
+  const int samples = kHorizonSamples;
+  const std::vector<Eigen::Vector2d>& directions = horizonSampleDirections();
   std::vector<std::optional<Eigen::Vector2d>> pixels(samples + 1);
-  for (int i = 0; i <= samples; ++i) pixels[i] = pixelOf(-kPi + 2.0 * kPi * i / samples);
+  for (int i = 0; i <= samples; ++i) pixels[i] = pixelOfDirection(directions[i]);
   for (int i = 0; i < samples; ++i) {
     if (!pixels[i] || !pixels[i + 1]) continue;
     const double u0 = pixels[i]->x(), u1 = pixels[i + 1]->x();
@@ -157,8 +180,8 @@ void CameraModel::computeHorizon() {
     for (int column = first; column <= last; ++column) {
       if (!std::isnan(horizon_rows_[column])) continue;
       // Secant steps, kept inside the bracket [a_lo, a_hi] (bisection when they leave it).
-      double a_lo = -kPi + 2.0 * kPi * i / samples, f_lo = u0 - column;
-      double a_hi = -kPi + 2.0 * kPi * (i + 1) / samples, f_hi = u1 - column;
+      double a_lo = horizonSampleAngle(i), f_lo = u0 - column;
+      double a_hi = horizonSampleAngle(i + 1), f_hi = u1 - column;
       double a0 = a_lo, f0 = f_lo, a1 = a_hi, f1 = f_hi;
       double v = std::abs(f_lo) < std::abs(f_hi) ? pixels[i]->y() : pixels[i + 1]->y();
       for (int iteration = 0; iteration < 40 && f_lo != 0.0 && f_hi != 0.0; ++iteration) {
