@@ -34,6 +34,13 @@ float quantile(std::vector<float>* values, double q) {
 
 float greyDistance(cv::Point2f c) { return std::hypot(c.x - 1.f / 3.f, c.y - 1.f / 3.f); }
 
+/// Squared chromaticity distance of a sample from `centre`: compared with squared radii, so the
+/// loops over all samples need no square root.
+float squaredDistance(const Sample& s, cv::Point2f centre) {
+  const float dr = s.r - centre.x, dg = s.g - centre.y;
+  return dr * dr + dg * dg;
+}
+
 template <typename Pixels>
 std::vector<Sample> collectSamples(const Pixels& pixels, const std::vector<int>& start_rows,
                                    const FieldColorConfig& config) {
@@ -109,8 +116,9 @@ double turfEvidence(const std::vector<Sample>& samples, cv::Point2f centre,
   // Turf is green to teal: green above red. Yellow, red and brown (wood, skin) are not turf.
   if (grey < config.min_grey_distance || centre.y < centre.x + config.min_green_over_red) return 0;
   int near = 0, near_bottom = 0, bottom = 0;
+  const float radius = static_cast<float>(config.max_chroma_radius);
   for (const Sample& s : samples) {
-    const bool in = std::hypot(s.r - centre.x, s.g - centre.y) < config.max_chroma_radius;
+    const bool in = squaredDistance(s, centre) < radius * radius;
     near += in;
     bottom += s.bottom;
     near_bottom += in && s.bottom;
@@ -263,8 +271,8 @@ FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& star
     double sum_r = 0.0, sum_g = 0.0;
     std::vector<float> distances;
     for (const Sample& s : samples) {
-      const float d = std::hypot(s.r - centre.x, s.g - centre.y);
-      if (d < radius) sum_r += s.r, sum_g += s.g, distances.push_back(d);
+      const float d2 = squaredDistance(s, centre);
+      if (d2 < radius * radius) sum_r += s.r, sum_g += s.g, distances.push_back(std::sqrt(d2));
     }
     if (distances.empty()) return color;
     centre = {static_cast<float>(sum_r / distances.size()),
@@ -281,7 +289,7 @@ FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& star
   std::vector<float> lumas, local_diffs;
   std::vector<const Sample*> textured;  // field samples with a luma change below them
   for (const Sample& s : samples) {
-    if (std::hypot(s.r - centre.x, s.g - centre.y) < radius) {
+    if (squaredDistance(s, centre) < radius * radius) {
       lumas.push_back(s.luma);
       if (s.diff_below < 0) continue;
       local_diffs.push_back(s.diff_below);
