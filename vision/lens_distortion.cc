@@ -43,6 +43,7 @@ LensDistortion::LensDistortion(DistortionModel model, const std::vector<double>&
     }
   }
   for (std::size_t i = 0; i < std::min<std::size_t>(n, 12); ++i) k_[i] = coefficients[i];
+  radial_tangential_only_ = std::all_of(k_ + 5, k_ + 12, [](double k) { return k == 0.0; });
   computeValidFieldAngle();
 }
 
@@ -109,10 +110,22 @@ Eigen::Vector2d LensDistortion::distortPinhole(const Eigen::Vector2d& p,
                                                Eigen::Matrix2d* jacobian) const {
   const double x = p.x(), y = p.y();
   const double r2 = x * x + y * y;
+  const double p1 = k_[2], p2 = k_[3];
+  if (radial_tangential_only_) {  // the general model below without its zero terms
+    const double radial_factor = 1.0 + r2 * (k_[0] + r2 * (k_[1] + r2 * k_[4]));
+    if (jacobian) {
+      const double dr = k_[0] + r2 * (2.0 * k_[1] + r2 * 3.0 * k_[4]);  // d radial_factor / d r2
+      (*jacobian)(0, 0) = radial_factor + 2.0 * x * x * dr + 2.0 * p1 * y + 6.0 * p2 * x;
+      (*jacobian)(0, 1) = 2.0 * x * y * dr + 2.0 * p1 * x + 2.0 * p2 * y;
+      (*jacobian)(1, 0) = (*jacobian)(0, 1);
+      (*jacobian)(1, 1) = radial_factor + 2.0 * y * y * dr + 6.0 * p1 * y + 2.0 * p2 * x;
+    }
+    return {x * radial_factor + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x),
+            y * radial_factor + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y};
+  }
   const double n = 1.0 + r2 * (k_[0] + r2 * (k_[1] + r2 * k_[4]));
   const double d = 1.0 + r2 * (k_[5] + r2 * (k_[6] + r2 * k_[7]));
   const double radial_factor = n / d;
-  const double p1 = k_[2], p2 = k_[3];
   const double xd =
       x * radial_factor + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x) + k_[8] * r2 + k_[9] * r2 * r2;
   const double yd = y * radial_factor + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y + k_[10] * r2 +
