@@ -43,7 +43,9 @@ LensDistortion::LensDistortion(DistortionModel model, const std::vector<double>&
     }
   }
   for (std::size_t i = 0; i < std::min<std::size_t>(n, 12); ++i) k_[i] = coefficients[i];
-  radial_tangential_only_ = std::all_of(k_ + 5, k_ + 12, [](double k) { return k == 0.0; });
+  const auto nonzero = [](double k) { return k != 0.0; };
+  rational_ = std::any_of(k_ + 5, k_ + 8, nonzero);
+  thin_prism_ = std::any_of(k_ + 8, k_ + 12, nonzero);
   computeValidFieldAngle();
 }
 
@@ -111,36 +113,41 @@ Eigen::Vector2d LensDistortion::distortPinhole(const Eigen::Vector2d& p,
   const double x = p.x(), y = p.y();
   const double r2 = x * x + y * y;
   const double p1 = k_[2], p2 = k_[3];
-  if (radial_tangential_only_) {  // the general model below without its zero terms
-    const double radial_factor = 1.0 + r2 * (k_[0] + r2 * (k_[1] + r2 * k_[4]));
-    if (jacobian) {
-      const double dr = k_[0] + r2 * (2.0 * k_[1] + r2 * 3.0 * k_[4]);  // d radial_factor / d r2
-      (*jacobian)(0, 0) = radial_factor + 2.0 * x * x * dr + 2.0 * p1 * y + 6.0 * p2 * x;
-      (*jacobian)(0, 1) = 2.0 * x * y * dr + 2.0 * p1 * x + 2.0 * p2 * y;
-      (*jacobian)(1, 0) = (*jacobian)(0, 1);
-      (*jacobian)(1, 1) = radial_factor + 2.0 * y * y * dr + 6.0 * p1 * y + 2.0 * p2 * x;
-    }
-    return {x * radial_factor + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x),
-            y * radial_factor + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y};
-  }
+  // Most calibrations have k1-k3, p1, p2 only: the rational denominator and the thin-prism
+  // terms are added where they are not zero.
   const double n = 1.0 + r2 * (k_[0] + r2 * (k_[1] + r2 * k_[4]));
-  const double d = 1.0 + r2 * (k_[5] + r2 * (k_[6] + r2 * k_[7]));
-  const double radial_factor = n / d;
-  const double xd =
-      x * radial_factor + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x) + k_[8] * r2 + k_[9] * r2 * r2;
-  const double yd = y * radial_factor + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y + k_[10] * r2 +
-                    k_[11] * r2 * r2;
+  double d = 1.0, radial_factor = n;
+  if (rational_) {
+    d = 1.0 + r2 * (k_[5] + r2 * (k_[6] + r2 * k_[7]));
+    radial_factor = n / d;
+  }
+  double xd = x * radial_factor + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x);
+  double yd = y * radial_factor + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y;
+  if (thin_prism_) {
+    xd += k_[8] * r2;
+    xd += k_[9] * r2 * r2;
+    yd += k_[10] * r2;
+    yd += k_[11] * r2 * r2;
+  }
   if (jacobian) {
     const double dn = k_[0] + r2 * (2.0 * k_[1] + r2 * 3.0 * k_[4]);
-    const double dd = k_[5] + r2 * (2.0 * k_[6] + r2 * 3.0 * k_[7]);
-    const double dr = (dn * d - n * dd) / (d * d);  // d radial_factor / d r2
-    const double prism_x = k_[8] + 2.0 * k_[9] * r2, prism_y = k_[10] + 2.0 * k_[11] * r2;
-    (*jacobian)(0, 0) =
-        radial_factor + 2.0 * x * x * dr + 2.0 * p1 * y + 6.0 * p2 * x + 2.0 * x * prism_x;
-    (*jacobian)(0, 1) = 2.0 * x * y * dr + 2.0 * p1 * x + 2.0 * p2 * y + 2.0 * y * prism_x;
-    (*jacobian)(1, 0) = 2.0 * x * y * dr + 2.0 * p1 * x + 2.0 * p2 * y + 2.0 * x * prism_y;
-    (*jacobian)(1, 1) =
-        radial_factor + 2.0 * y * y * dr + 6.0 * p1 * y + 2.0 * p2 * x + 2.0 * y * prism_y;
+    double dr = dn;  // d radial_factor / d r2
+    if (rational_) {
+      const double dd = k_[5] + r2 * (2.0 * k_[6] + r2 * 3.0 * k_[7]);
+      dr = (dn * d - n * dd) / (d * d);
+    }
+    double j00 = radial_factor + 2.0 * x * x * dr + 2.0 * p1 * y + 6.0 * p2 * x;
+    double j01 = 2.0 * x * y * dr + 2.0 * p1 * x + 2.0 * p2 * y;
+    double j10 = j01;
+    double j11 = radial_factor + 2.0 * y * y * dr + 6.0 * p1 * y + 2.0 * p2 * x;
+    if (thin_prism_) {
+      const double prism_x = k_[8] + 2.0 * k_[9] * r2, prism_y = k_[10] + 2.0 * k_[11] * r2;
+      j00 += 2.0 * x * prism_x;
+      j01 += 2.0 * y * prism_x;
+      j10 += 2.0 * x * prism_y;
+      j11 += 2.0 * y * prism_y;
+    }
+    *jacobian << j00, j01, j10, j11;
   }
   return {xd, yd};
 }

@@ -62,9 +62,9 @@ class LensDistortion {
   DistortionModel model_ = DistortionModel::kPinhole;
   /// Pinhole: k1, k2, p1, p2, k3, k4, k5, k6, s1, s2, s3, s4 (zero-padded); fisheye: k1..k4.
   double k_[12] = {};
-  /// Pinhole with k1, k2, k3, p1, p2 only (no rational denominator k4-k6, no thin prism s1-s4),
-  /// as most calibrations: distortPinhole() leaves out their zero terms.
-  bool radial_tangential_only_ = true;
+  /// Whether the rational denominator (k4-k6) and the thin prism (s1-s4) have a non-zero
+  /// coefficient; distortPinhole() leaves out the terms that are zero (most calibrations).
+  bool rational_ = false, thin_prism_ = false;
   double max_theta_rad_ = 1.5533;  ///< 89 deg until computeValidFieldAngle()
   /// Upper end of radial()'s monotonic argument range: r = tan(theta) (pinhole) or theta.
   double max_radial_arg_ = 57.0;
