@@ -83,15 +83,30 @@ class SpotScanner {
         ++i;
         continue;
       }
+      // A rise from something dark is no line's edge, and all that is brighter than the dark
+      // pixel would pass for its run (LineSpotConfig::dark_run_turf_px): it ends at the turf.
+      const bool from_dark = background < dark_luma_;
       int end = i;
       int peak = i;
-      while (end < line.n && line.luma(end) - background >= threshold / 2) {
+      while (end < line.n && line.luma(end) - background >= threshold / 2 &&
+             !(from_dark && turfRun(line, end))) {
         if (line.luma(end) > line.luma(peak)) peak = end;
         ++end;
       }
       check(line, i - kEdgeGap, peak, end);
       i = end + 1;
     }
+  }
+
+  /// Whether the pixels from `from` on start a run of turf (dark_run_turf_px; the scanline's
+  /// end may cut it short): the end of a dark object's run. More than a pixel or two, since
+  /// grey pixels inside a robot pass for turf too.
+  template <typename Run>
+  bool turfRun(const Scanline<Run>& line, int from) const {
+    for (int k = from; k < std::min(line.n, from + config_.dark_run_turf_px); ++k) {
+      if (!color_.isField(line.at(k))) return false;
+    }
+    return true;
   }
 
   /// The radius (px) a ball at the spot has in the image: its radius over the ground's metres
@@ -155,7 +170,7 @@ class SpotScanner {
       if (idx < 0 || idx >= line.n) break;
       ++seen;
       const int luma = line.luma(idx);
-      turf += luma >= paint_luma || color_.isField(line.at(idx));
+      turf += luma >= paint_luma || (luma >= dark_luma_ && color_.isField(line.at(idx)));
     }
     return 2 * turf >= seen;
   }

@@ -87,12 +87,17 @@ struct LineSpotConfig {
                                          ///< half of this many px must be turf too ...
   double turf_beside_width_share = 0.5;  ///< ... or of this share of the expected width
   double dark_luma_ratio = 0.6;          ///< a non-turf pixel darker than this share of the turf's
-                                         ///< median luma between edge and turf rejects the spot
-  double max_edge_ramp_px = 8.0;         ///< an edge ramping from peak to turf over more than this
-                                         ///< (px; blur and motion blur stay below) ...
-  double max_edge_ramp_ratio = 0.2;      ///< ... and this share of the expected width is no paint
-                                         ///< but the shading of a round white bar (the goal frame
-                                         ///< lying on the ground)
+                                         ///< median luma between edge and turf rejects the spot;
+                                         ///< such dark pixels never count as turf beside a line
+  int dark_run_turf_px = 8;  ///< a run rising from a dark pixel (a robot's joint, the shadow under
+                             ///< it) is no line's edge; it ends where this many turf px follow
+                             ///< in a row, so the scan goes on behind the object (else all that
+                             ///< is brighter than the dark pixel passed for the run)
+  double max_edge_ramp_px = 8.0;     ///< an edge ramping from peak to turf over more than this
+                                     ///< (px; blur and motion blur stay below) ...
+  double max_edge_ramp_ratio = 0.2;  ///< ... and this share of the expected width is no paint
+                                     ///< but the shading of a round white bar (the goal frame
+                                     ///< lying on the ground)
   LineContinuationConfig continuation;
   BallConfig ball;
   SpotSupportConfig support;
