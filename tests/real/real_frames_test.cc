@@ -103,13 +103,15 @@ TEST_F(RealFramesTest, MaskedImages) {
       // specks of turf only, the field top rescan (step 4e) the lines, whose widths then give
       // the rest of the pitch (0.97 / 0.12 with the bound's pitch alone; 0.92 / 0.91 measured)
       {"bitbots_nao_upper", {0.9, 0.85}},
-      {"bitbots_kid_620x480", {0.4, 0.6}},  // 0.44 / 0.63 measured
+      // the recall target, 0.7, met since runs from dark pixels end at the turf (0.44 /
+      // 0.63 before); its mask labels only fragments of the lines, so precision is low
+      {"bitbots_kid_620x480", {0.4, 0.7}},  // 0.41 / 0.71 measured
       // far lines 1-3 px wide that take the turf's chroma are white by the light they add
       // (LineSpotConfig::max_blend_width_px; 0.79 / 0.38 by the peak's colour alone); the far
       // turf's own texture sets their threshold (LineSpotConfig::far_turf_m_per_px; 0.84 / 0.40
       // with the whole turf's, whose near texture and far-to-near gradient gave 44 grey levels
       // against the far halfway line's 38-43 at column 100)
-      {"torso21_kid_800x600", {0.9, 0.55}},  // 0.91 / 0.57 measured
+      {"torso21_kid_800x600", {0.9, 0.55}},  // 0.92 / 0.58 measured
       // hard sunlight: 1 of its 13 points lies on a line (0.08 / 0.04 measured with 12 points
       // before the thin lines' added light; the new point lies in the sun, off the line)
       {"torso21_kid_620x480", {0.07, 0.03}},
