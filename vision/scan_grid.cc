@@ -6,12 +6,20 @@
 namespace houghloc {
 namespace {
 
-/// First row (from the top) in column u whose ground lies within max_range_m: bisection on
-/// pixelToGround, which the camera model rejects above the horizon and beyond its own range.
-int rangeLimitRow(const CameraModel& camera, double u, double max_range_m) {
+/// First row (from the top) in column u that sees ground within config.max_range_m of the
+/// camera's foot when the camera looks config.range_pitch_margin_rad further down than its pose
+/// says: bisection on the depression of the pixel's ray below the horizontal.
+int rangeLimitRow(const CameraModel& camera, double u, const ScanGridConfig& config) {
+  const double height_m = camera.pose().z;
+  if (!(height_m > 0.0)) return camera.height();  // no ground below the camera
+  // Never above the rays the camera model projects at all (CameraModelConfig).
+  const double min_depression =
+      std::max(std::atan2(height_m, config.max_range_m) - config.range_pitch_margin_rad,
+               camera.config().min_depression_rad);
+  const double min_sine = std::sin(min_depression);
   const auto within = [&](int v) {
-    const auto p = camera.pixelToGround(u, v);
-    return p && p->norm() <= max_range_m;
+    const Eigen::Vector3d ray = camera.pixelRay(u, v);  // unit: -z is the depression's sine
+    return ray.allFinite() && -ray.z() >= min_sine;
   };
   int lo = 0, hi = camera.height() - 1;
   if (within(lo)) return 0;
@@ -37,9 +45,19 @@ ScanGrid makeScanGrid(const CameraModel& camera, const LineWidthModel& widths,
   const double u_mid = 0.5 * (width - 1);
   // With roll the range limit is tilted: take the most permissive of three probes; every spot
   // is range-checked again when it is projected.
-  grid.top_row = std::min({rangeLimitRow(camera, 0.0, config.max_range_m),
-                           rangeLimitRow(camera, u_mid, config.max_range_m),
-                           rangeLimitRow(camera, width - 1.0, config.max_range_m)});
+  const auto topRow = [&](const ScanGridConfig& c) {
+    return std::min({rangeLimitRow(camera, 0.0, c), rangeLimitRow(camera, u_mid, c),
+                     rangeLimitRow(camera, width - 1.0, c)});
+  };
+  grid.top_row = topRow(config);
+  // The pitch margin's band (above the range limit at the pose itself) is there for a pose a
+  // degree or two off: its scanlines are spaced as at that limit, its rows sparser still.
+  ScanGridConfig at_pose = config;
+  at_pose.range_pitch_margin_rad = 0.0;
+  const int range_row = topRow(at_pose);
+  const auto spacingRow = [&](double v) {
+    return static_cast<float>(std::max(v, 1.0 * range_row));
+  };
   float boundary_top = static_cast<float>(height);
   for (float row : boundary.rows) boundary_top = std::min(boundary_top, row);
   const int first_row = std::max(grid.top_row, static_cast<int>(std::ceil(boundary_top)));
@@ -48,9 +66,9 @@ ScanGrid makeScanGrid(const CameraModel& camera, const LineWidthModel& widths,
   // Horizontal scanlines: the ground distance between rows is metres-per-px along the column.
   for (double v = height - 1.0; v >= first_row;) {
     grid.rows.push_back(static_cast<int>(v));
-    const double m_per_px =
-        widths.metresPerPx(static_cast<float>(u_mid), static_cast<float>(v)).y();
-    v -= clampStep(config.target_spacing_m / m_per_px, config.min_row_step_px, config.max_step_px);
+    const double m_per_px = widths.metresPerPx(static_cast<float>(u_mid), spacingRow(v)).y();
+    const int min_step = v < range_row ? config.margin_row_step_px : config.min_row_step_px;
+    v -= clampStep(config.target_spacing_m / m_per_px, min_step, config.max_step_px);
   }
 
   // Vertical scanlines: level L (every min_step * 2^L px) is needed where the wanted column
@@ -62,8 +80,7 @@ ScanGrid makeScanGrid(const CameraModel& camera, const LineWidthModel& widths,
   for (int level = 0; level < max_level; ++level) {
     int v = first_row;
     while (v < height) {
-      const double m_per_px =
-          widths.metresPerPx(static_cast<float>(u_mid), static_cast<float>(v)).x();
+      const double m_per_px = widths.metresPerPx(static_cast<float>(u_mid), spacingRow(v)).x();
       if (config.target_spacing_m / m_per_px >= (min_step << (level + 1))) break;
       ++v;
     }

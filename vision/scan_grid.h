@@ -13,7 +13,13 @@ struct ScanGridConfig {
   int min_row_step_px = 1;         ///< densest horizontal scanline spacing
   int min_column_step_px = 2;      ///< densest vertical scanline spacing
   int max_step_px = 32;            ///< sparsest spacing (near the robot)
-  double max_range_m = 5.0;        ///< rows whose ground is farther than this are not scanned
+  double max_range_m = 5.0;        ///< rows whose ground is farther than this are not scanned ...
+  /// ... with the camera looking this much further down than its pose says (rad): a recorded
+  /// pitch is often a few degrees short, and the pitch/roll correction and the rescans that find
+  /// it run after the scan, so spots beyond the range at the recorded pose may end up within it
+  /// (docs/vision.md "Scan range").
+  double range_pitch_margin_rad = 0.0175;
+  int margin_row_step_px = 4;  ///< rows in that margin's band are at least this far apart
 };
 
 /// Where to look: horizontal scanlines at rows spaced so neighbouring rows see ground about

@@ -168,14 +168,15 @@ TEST(RealGroundTruthFrames, PointToMapDistanceAndGoalLineAtTheRecordedPose) {
 TEST(RealGroundTruthFrames, VisibleLineCoverageAtTheRecordedPose) {
   REQUIRE_REAL_DATA();
   // Share of the map's line samples within 5 m in view with a point within 0.15 m, over the
-  // seven frames (measured 0.594, the column scan 0.425; 0.360 before the sunlit lines had
-  // points; black1_point4_top's 86 points lie beside the lines at the recorded pitch, 0.09
-  // there). The far samples of the uncorrected frames are missed for the pitch bias above.
+  // seven frames (measured 0.619, the column scan 0.425; 0.600 before the scan reached a pitch
+  // margin beyond its range, ScanGridConfig::range_pitch_margin_rad; 0.360 before the sunlit
+  // lines had points; black1_point4_top's 87 points lie beside the lines at the recorded pitch,
+  // 0.12 there). The far samples of the uncorrected frames are missed for the pitch bias above.
   const PooledCoverage all = pooledCoverage(physarFrames());
   ASSERT_GT(all.visible, 0);
   std::printf("coverage over the seven frames: %.3f (%ld of %ld samples), baseline %.3f\n",
               all.share(), all.covered, all.visible, all.baselineShare());
-  EXPECT_GE(all.share(), 0.55);
+  EXPECT_GE(all.share(), 0.61);
 }
 
 std::vector<GlobalCheckFrame> globalCheck(bool add_fit_dpitch, bool pose_correction,
