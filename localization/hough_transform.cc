@@ -1,5 +1,6 @@
 #include "localization/hough_transform.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -69,11 +70,13 @@ void HoughTransform::addPoint(const Eigen::Vector2d& p, double weight) {
 void HoughTransform::addPoints(const WeightedPoints& points) {
   if (cells_.empty()) return;
   // Column by column (one column stays in L1 while every point votes into it; point by point
-  // would sweep the whole accumulator per point), with the rows of all points computed first
-  // in a loop the compiler vectorises. Same arithmetic and, per cell, the same order of
-  // additions as addPoint, so the result is identical.
+  // would sweep the whole accumulator per point). Per column, a loop the compiler vectorises
+  // computes every point's row and the two shares of its vote, then a plain loop adds them;
+  // a column where some point falls outside the rows takes addPoint's per-point path instead.
+  // Same arithmetic and, per cell, the same order of additions as addPoint, so the result is
+  // identical.
   const float inv_step = static_cast<float>(1.0 / config_.rho_step_m);
-  std::vector<float> xs, ys, ws, rows;
+  std::vector<float> xs, ys, ws;
   std::vector<double> weights;
   xs.reserve(points.size());
   ys.reserve(points.size());
@@ -89,21 +92,39 @@ void HoughTransform::addPoints(const WeightedPoints& points) {
     weights.push_back(weight);
   }
   const int n = static_cast<int>(xs.size());
-  rows.resize(n);
+  std::vector<float> rows(n), lower(n), upper(n);
+  std::vector<int> first(n);
   const float centre = static_cast<float>(centre_row_);
   const float last = num_rho_ - 1.0f;
   float* column = cells_.data();
   for (int i = 0; i < num_theta_; ++i, column += num_rho_) {
     const float c = cos_[i], s = sin_[i];
-    for (int k = 0; k < n; ++k) rows[k] = xs[k] * c + ys[k] * s + centre;
+    int outside = 0;
+    for (int k = 0; k < n; ++k) {
+      const float r = xs[k] * c + ys[k] * s + centre;
+      rows[k] = r;
+      outside += (r < 0.0f) | (r >= last);  // r is finite: the inside test of addPoint
+      // Clamped before the conversion, so that no row out of int's range is converted; inside
+      // the rows (the only case these shares are used) the clamp changes nothing.
+      const int j = static_cast<int>(std::min(std::max(r, 0.0f), last));
+      const float f = r - j;
+      const float w = ws[k];
+      first[k] = j;
+      lower[k] = w - w * f;
+      upper[k] = w * f;
+    }
+    if (outside == 0) {
+      for (int k = 0; k < n; ++k) {
+        column[first[k]] += lower[k];
+        column[first[k] + 1] += upper[k];
+      }
+      continue;
+    }
     for (int k = 0; k < n; ++k) {
       const float r = rows[k];
       if (r >= 0.0f && r < last) {
-        const int j = static_cast<int>(r);
-        const float f = r - j;
-        const float w = ws[k];
-        column[j] += w - w * f;
-        column[j + 1] += w * f;
+        column[first[k]] += lower[k];
+        column[first[k] + 1] += upper[k];
       } else {
         vote(column, num_rho_, r, weights[k]);
       }
