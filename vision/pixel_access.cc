@@ -60,11 +60,16 @@ void decodeColumn(const uchar* pair, size_t step, int y_offset, int n, uchar* bg
   const auto channel = [&](const cv::v_int32x4& sum) {
     return cv::v_min(cv::v_max(cv::v_shr<kShift>(sum), zero), top);
   };
+  // The rows a column reads are a frame row apart, too far for the hardware to see a stream:
+  // each gather asks for the pair kAheadRows rows further down in advance.
+  constexpr int kAheadRows = 32;
   for (; k + 16 <= n; k += 16) {
     // Each pair as one 32-bit lane, Y0 in the low byte (one load per row on a little-endian
     // target; the arithmetic below needs no byte order).
     alignas(16) int pairs[16];
+    const bool ahead = k + 16 + kAheadRows <= n;  // no prefetch beyond the column
     for (int i = 0; i < 16; ++i, pair += step) {
+      if (ahead) __builtin_prefetch(pair + kAheadRows * step);
       pairs[i] = static_cast<int>(pair[0] | pair[1] << 8 | pair[2] << 16 |
                                   static_cast<unsigned>(pair[3]) << 24);
     }
