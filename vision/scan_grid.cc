@@ -31,9 +31,12 @@ int rangeLimitRow(const CameraModel& camera, double u, const ScanGridConfig& con
   return hi;
 }
 
+/// step (px) within [min_step, max_step], and at least 1 px whatever a config says (a step of 0
+/// would never leave the row it is on).
 int clampStep(double step, int min_step, int max_step) {
-  if (!std::isfinite(step)) return min_step;
-  return std::clamp(static_cast<int>(step), min_step, max_step);
+  const int low = std::max(1, min_step), high = std::max(low, max_step);
+  if (!std::isfinite(step)) return low;
+  return static_cast<int>(std::clamp(step, 1.0 * low, 1.0 * high));
 }
 
 }  // namespace
@@ -73,9 +76,11 @@ ScanGrid makeScanGrid(const CameraModel& camera, const LineWidthModel& widths,
 
   // Vertical scanlines: level L (every min_step * 2^L px) is needed where the wanted column
   // spacing is below min_step * 2^(L + 1), i.e. from the top down to the row where it reaches it.
-  const int min_step = std::max(1, config.min_column_step_px);
+  // At most 2^14 px and 16 levels whatever a config says, so that no shift overflows.
+  const int min_step = std::clamp(config.min_column_step_px, 1, 1 << 14);
   int max_level = 0;
-  while ((min_step << (max_level + 1)) <= config.max_step_px) ++max_level;
+  constexpr int kMaxLevel = 16;
+  while (max_level < kMaxLevel && (min_step << (max_level + 1)) <= config.max_step_px) ++max_level;
   std::vector<int> level_end(static_cast<size_t>(max_level + 1), height);
   for (int level = 0; level < max_level; ++level) {
     int v = first_row;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "vision/camera_presets.h"
 
@@ -81,6 +82,37 @@ TEST(ScanGrid, ScansTheMarginsBandSparselyAndLeavesTheRestAsItWas) {
       wide.columns.begin(), wide.columns.end(),
       [](const ScanGrid::Column& a, const ScanGrid::Column& b) { return a.v_begin < b.v_begin; });
   EXPECT_EQ(highest->v_begin, wide.top_row);
+}
+
+TEST(ScanGrid, EndsWhateverItsConfigSays) {
+  const CameraPreset preset = cameraPreset("nao-top");
+  const CameraModel camera(preset.intrinsics, preset.robot_T_camera);
+  const LineWidthModel widths(camera, 0.05);
+  const FieldBoundary boundary = fieldToTheTop(camera);
+  const int big = std::numeric_limits<int>::max();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int steps : {0, -3, big}) {
+    for (double margin : {0.0, -5.0, 100.0, nan}) {
+      ScanGridConfig config;
+      config.min_row_step_px = steps;
+      config.margin_row_step_px = steps;
+      config.min_column_step_px = steps;
+      config.max_step_px = steps == big ? big : steps;
+      config.range_pitch_margin_rad = margin;
+      const ScanGrid grid = makeScanGrid(camera, widths, boundary, config);
+      // Rows strictly bottom to top inside the image, columns inside it.
+      for (std::size_t i = 0; i < grid.rows.size(); ++i) {
+        EXPECT_TRUE(grid.rows[i] >= 0 && grid.rows[i] < camera.height());
+        if (i > 0) {
+          EXPECT_LT(grid.rows[i], grid.rows[i - 1]);
+        }
+      }
+      for (const ScanGrid::Column& c : grid.columns) {
+        EXPECT_TRUE(c.u >= 0 && c.u < camera.width());
+        EXPECT_TRUE(c.v_begin >= 0 && c.v_end <= camera.height());
+      }
+    }
+  }
 }
 
 }  // namespace
