@@ -6,16 +6,16 @@
 namespace houghloc {
 namespace {
 
-/// First row (from the top) in column u that sees ground within config.max_range_m of the
-/// camera's foot when the camera looks config.range_pitch_margin_rad further down than its pose
-/// says: bisection on the depression of the pixel's ray below the horizontal.
-int rangeLimitRow(const CameraModel& camera, double u, const ScanGridConfig& config) {
+/// First row (from the top) in column u that sees ground within max_range_m of the camera's
+/// foot when the camera looks pitch_margin_rad further down than its pose says: bisection on
+/// the depression of the pixel's ray below the horizontal.
+int rangeLimitRow(const CameraModel& camera, double u, double max_range_m,
+                  double pitch_margin_rad) {
   const double height_m = camera.pose().z;
   if (!(height_m > 0.0)) return camera.height();  // no ground below the camera
   // Never above the rays the camera model projects at all (CameraModelConfig).
-  const double min_depression =
-      std::max(std::atan2(height_m, config.max_range_m) - config.range_pitch_margin_rad,
-               camera.config().min_depression_rad);
+  const double min_depression = std::max(std::atan2(height_m, max_range_m) - pitch_margin_rad,
+                                         camera.config().min_depression_rad);
   const double min_sine = std::sin(min_depression);
   const auto within = [&](int v) {
     const Eigen::Vector3d ray = camera.pixelRay(u, v);  // unit: -z is the depression's sine
@@ -48,16 +48,15 @@ ScanGrid makeScanGrid(const CameraModel& camera, const LineWidthModel& widths,
   const double u_mid = 0.5 * (width - 1);
   // With roll the range limit is tilted: take the most permissive of three probes; every spot
   // is range-checked again when it is projected.
-  const auto topRow = [&](const ScanGridConfig& c) {
-    return std::min({rangeLimitRow(camera, 0.0, c), rangeLimitRow(camera, u_mid, c),
-                     rangeLimitRow(camera, width - 1.0, c)});
+  const auto topRow = [&](double pitch_margin_rad) {
+    return std::min({rangeLimitRow(camera, 0.0, config.max_range_m, pitch_margin_rad),
+                     rangeLimitRow(camera, u_mid, config.max_range_m, pitch_margin_rad),
+                     rangeLimitRow(camera, width - 1.0, config.max_range_m, pitch_margin_rad)});
   };
-  grid.top_row = topRow(config);
+  grid.top_row = topRow(config.range_pitch_margin_rad);
   // The pitch margin's band (above the range limit at the pose itself) is there for a pose a
   // degree or two off: its scanlines are spaced as at that limit, its rows sparser still.
-  ScanGridConfig at_pose = config;
-  at_pose.range_pitch_margin_rad = 0.0;
-  const int range_row = topRow(at_pose);
+  const int range_row = topRow(0.0);
   const auto spacingRow = [&](double v) {
     return static_cast<float>(std::max(v, 1.0 * range_row));
   };
