@@ -103,6 +103,21 @@ class DistanceGrid {
     if (!q_on_grid) return seen_m - slope_ * moved_l1_m - moved_m;
     return std::max(seen_m - slope_ * moved_l1_m, seen_m - moved_m - 2.0 * cell_diagonal_);
   }
+  /// The longest move that movedLowerBound keeps at or above `limit_m`, slightly shortened
+  /// against rounding; negative when no move does. A move of t units has an L1 length of at most
+  /// t * l1_per_unit + rounding_m and a length of at most t * length_per_unit + rounding_m (a
+  /// scan's direction and the rounding of its positions). The bound falls as the move grows, so
+  /// a scan skips every position up to this far at once instead of testing each.
+  double farMove(bool q_on_grid, double seen_m, double limit_m, double l1_per_unit,
+                 double length_per_unit, double rounding_m) const {
+    const double excess = seen_m - limit_m;
+    const double t =
+        q_on_grid
+            ? std::max((excess - slope_ * rounding_m) / (slope_ * l1_per_unit),
+                       (excess - rounding_m - 2.0 * cell_diagonal_) / length_per_unit)
+            : (excess - (slope_ + 1.0) * rounding_m) / (slope_ * l1_per_unit + length_per_unit);
+    return t - 1e-9 * (1.0 + std::abs(t));
+  }
 
   double resolution() const { return config_.resolution_m; }
   int cols() const { return cols_; }

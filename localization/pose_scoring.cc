@@ -138,16 +138,9 @@ std::vector<double> scoreAlongLine(const WeightedPoints& points, double theta_ra
       out[j] += w * kernel(d, inv_w2);
       best = std::max(best, out[j]);
       std::size_t next = j + 1;
-      if (d > limit) {
-        const bool on_grid = grid.onGrid(q);
-        while (next < n) {
-          const double ds = s_values[next] - s_values[j];
-          if (grid.movedLowerBound(on_grid, d, ds * u_l1 + kRoundingM, ds * u_norm + kRoundingM) <
-              limit) {
-            break;
-          }
-          ++next;  // the point adds exactly zero there
-        }
+      if (d > limit) {  // the point adds exactly zero up to `far` further on
+        const double far = grid.farMove(grid.onGrid(q), d, limit, u_l1, u_norm, kRoundingM);
+        while (next < n && s_values[next] - s_values[j] <= far) ++next;
       }
       j = next;
     }
