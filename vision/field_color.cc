@@ -146,8 +146,14 @@ cv::Point2f turfPeak(const std::vector<Sample>& samples, const FieldColorConfig&
   }
   if (previous && previous->valid) {
     // The previous estimate wins only where this frame still holds it (no wrong estimate sticks).
+    // Its bonus steadies the estimate within one turf, whose peak moves a little from frame to
+    // frame; a cluster further than max_chroma_radius from this frame's best must win on its
+    // evidence alone (a view that turned from shaded to sunlit turf takes the sunlit one).
     const cv::Point2f kept(previous->r, previous->g);
-    const double score = config.memory_bonus * turfEvidence(samples, kept, config);
+    const cv::Point2f moved = kept - best;
+    const float radius = static_cast<float>(config.max_chroma_radius);
+    const double bonus = moved.dot(moved) <= radius * radius ? config.memory_bonus : 1.0;
+    const double score = bonus * turfEvidence(samples, kept, config);
     if (score > best_score) best = kept;
   }
   return best;

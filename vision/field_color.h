@@ -30,7 +30,9 @@ struct FieldColorConfig {
   double min_green_over_red = 0.02;   ///< turf is green to teal: g at least r + this
   double max_grey_share = 0.75;       ///< radius at most this share of the distance to grey
   double memory_bonus = 1.5;          ///< the previous frame's colour wins when this times its
-                                      ///< evidence in the current frame beats the best peak
+                                      ///< evidence in the current frame beats the best peak; only
+                                      ///< within max_chroma_radius of that peak (the same turf),
+                                      ///< elsewhere its evidence alone must beat it
   int memory_frames = 10;  ///< the last valid colour is offered for this many frames after it
   // Sun and shade (FieldColor::lit_split): the field samples' lumas split into two light levels
   // when each level holds at least this share of them ...

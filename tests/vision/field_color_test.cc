@@ -163,5 +163,44 @@ TEST(FieldColor, RemembersTheLastColourOnlyWhereTheFrameSupportsIt) {
   EXPECT_NEAR(again.g, previous.g, 5e-3);  // the refinement starts elsewhere
 }
 
+/// Turf of two colours side by side, both down to the image bottom: `left_share` of the columns
+/// a dark teal green (chromaticity r 0.21, g 0.51), the rest a bright yellowish green (r 0.37,
+/// g 0.46), 0.16 apart: turf in the shade of a hall's windows and turf in the sun.
+cv::Mat shadeAndSun(double left_share) {
+  cv::Mat image(120, 160, CV_8UC3);
+  cv::RNG rng(11);
+  for (int v = 0; v < image.rows; ++v) {
+    for (int u = 0; u < image.cols; ++u) {
+      const cv::Vec3d colour =
+          u < left_share * image.cols ? cv::Vec3d(60, 110, 45) : cv::Vec3d(70, 190, 150);
+      for (int c = 0; c < 3; ++c) {
+        image.at<cv::Vec3b>(v, u)[c] = cv::saturate_cast<uchar>(colour[c] + rng.gaussian(3.0));
+      }
+    }
+  }
+  return image;
+}
+
+TEST(FieldColor, TakesThisFramesTurfOverARememberedColourOfAnotherCluster) {
+  const std::vector<int> rows(160, 0);
+  const FieldColor shade = estimateFieldColor(shadeAndSun(1.0), rows);
+  ASSERT_TRUE(shade.valid);
+  EXPECT_NEAR(shade.r, 0.21, 0.02);
+  // 45 % shade, 55 % sun: the sun holds more of the frame, the remembered shade colour a share
+  // that its bonus (1.5) would lift above the sun's. It is another cluster, so the sun wins.
+  const cv::Mat both = shadeAndSun(0.45);
+  const FieldColor alone = estimateFieldColor(both, rows);
+  const FieldColor remembered = estimateFieldColor(both, rows, {}, &shade);
+  ASSERT_TRUE(alone.valid);
+  ASSERT_TRUE(remembered.valid);
+  EXPECT_NEAR(alone.r, 0.37, 0.02);
+  EXPECT_NEAR(remembered.r, alone.r, 1e-3);
+  EXPECT_NEAR(remembered.g, alone.g, 1e-3);
+  // When the shade holds most of the frame it stays, with or without the memory.
+  const FieldColor mostly_shade = estimateFieldColor(shadeAndSun(0.6), rows, {}, &shade);
+  ASSERT_TRUE(mostly_shade.valid);
+  EXPECT_NEAR(mostly_shade.r, 0.21, 0.02);
+}
+
 }  // namespace
 }  // namespace houghloc

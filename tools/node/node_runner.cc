@@ -27,7 +27,7 @@ NodeRunner::NodeRunner(lcm::LCM& lcm, NodeCore& core, const std::string& channel
       options_(options) {
   auto small = [this](auto msg, void (NodeCore::*on)(const decltype(msg)&)) {
     return [this, on](const lcm::ReceiveBuffer& buf) {
-      decltype(msg) m;
+      decltype(msg) m{};  // value-initialised: decode() fills it, the compiler cannot see that
       if (!decode(buf, m)) return;
       std::lock_guard<std::mutex> lock(mutex_);
       small_.push_back([m, on](NodeCore& core) { (core.*on)(m); });
