@@ -123,14 +123,14 @@ TEST_P(FastPathsTest, ScoringATranslationScanEqualsScoringEachPose) {
   }
 }
 
-TEST_P(FastPathsTest, MovedLowerBoundHoldsOnAndOffTheGrid) {
+TEST_P(FastPathsTest, MovedLowerBoundAndFarMoveHoldOnAndOffTheGrid) {
   const FieldModel field = makeStandardField(GetParam());
   const DistanceGrid grid(field);
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   // From points on the grid and beyond it (the grid ends 0.5 m past the carpet).
   const double hx = field.outerHalfLength() + 2.0, hy = field.outerHalfWidth() + 2.0;
-  int useful = 0, off_grid = 0;
+  int useful = 0, off_grid = 0, skipping = 0;
   for (int i = 0; i < 100000; ++i) {
     const Eigen::Vector2d q(hx * u(rng), hy * u(rng));
     const double limit = i % 2 ? 0.15 : 0.4;
@@ -148,41 +148,25 @@ TEST_P(FastPathsTest, MovedLowerBoundHoldsOnAndOffTheGrid) {
       ++useful;
       off_grid += !grid.onGrid(q);
     }
-  }
-  EXPECT_GT(useful, 10000);  // the bound is tight enough to skip many positions
-  EXPECT_GT(off_grid, 1000);
-}
-
-TEST_P(FastPathsTest, FarMoveIsTheLongestMoveTheBoundKeepsAboveTheLimit) {
-  const FieldModel field = makeStandardField(GetParam());
-  const DistanceGrid grid(field);
-  std::mt19937 rng(31);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const double hx = field.outerHalfLength() + 2.0, hy = field.outerHalfWidth() + 2.0;
-  constexpr double kRoundingM = 1e-9;
-  int skipping = 0;
-  for (int i = 0; i < 100000; ++i) {
-    const Eigen::Vector2d q(hx * u(rng), hy * u(rng));
-    const double limit = i % 2 ? 0.15 : 0.4;
-    const double seen = grid.distanceBelow(q, limit);
-    const double angle = M_PI * u(rng);
-    // A scan's direction, scaled as scoreAlongLine scales it against rounding.
+    // farMove along the same direction, scaled as scoreAlongLine scales a scan's against
+    // rounding: every move up to it keeps the bound at or above the limit, one 1e-6 longer not.
     const double l1 = (std::abs(std::cos(angle)) + std::abs(std::sin(angle))) * (1.0 + 1e-12);
     const double length = 1.0 + 1e-12;
     const bool on_grid = grid.onGrid(q);
-    const double far = grid.farMove(on_grid, seen, limit, l1, length, kRoundingM);
-    const auto bound = [&](double t) {
-      return grid.movedLowerBound(on_grid, seen, t * l1 + kRoundingM, t * length + kRoundingM);
+    const double far = grid.farMove(on_grid, seen, limit, l1, length, 1e-9);
+    const auto boundAfter = [&](double t) {
+      return grid.movedLowerBound(on_grid, seen, t * l1 + 1e-9, t * length + 1e-9);
     };
-    if (far < 0.0) {  // no move at all keeps the bound up
-      ASSERT_LT(bound(0.0), limit + 1e-6) << q.transpose();
+    if (far < 0.0) {
+      ASSERT_LT(boundAfter(0.0), limit + 1e-6) << q.transpose();
       continue;
     }
+    for (const double t : {0.0, 0.5 * far, far}) ASSERT_GE(boundAfter(t), limit) << q.transpose();
+    ASSERT_LT(boundAfter(far + 1e-6), limit) << q.transpose();
     ++skipping;
-    // Every move up to `far` keeps the bound at or above the limit; a move 1e-6 longer not.
-    for (const double t : {0.0, 0.5 * far, far}) ASSERT_GE(bound(t), limit) << q.transpose();
-    ASSERT_LT(bound(far + 1e-6), limit) << q.transpose();
   }
+  EXPECT_GT(useful, 10000);  // the bound is tight enough to skip many positions
+  EXPECT_GT(off_grid, 1000);
   EXPECT_GT(skipping, 10000);
 }
 

@@ -40,29 +40,26 @@ TEST(YuyvPixels, DecodesEveryYCbCrLikeOpenCv) {
     }
   }
   EXPECT_EQ(mismatches, 0) << "of " << yuyv.total() << " pixels";
+  // Pixel k of a run against pixel (u, v) of the BGR decode: bytes and luma.
+  const auto differs = [&](const DecodedRun& run, int k, int u, int v) {
+    const uchar* expected = bgr.ptr<uchar>(v) + 3 * u;
+    const uchar* got = run.at(k);
+    return !sameBytes({got[0], got[1], got[2]}, expected) ||
+           run.luma(k) != FieldColor::luma(expected);
+  };
   // Column u holds every (Cb, Cr) with Y = u: the vectorised column decoding, all 2^24 too.
   RunBuffer buffer;
   long column_mismatches = 0;
   for (int u = 0; u < yuyv.cols; ++u) {
     const DecodedRun column = pixels.columnRun(u, 0, yuyv.rows, &buffer);
-    for (int v = 0; v < yuyv.rows; ++v) {
-      const uchar* expected = bgr.ptr<uchar>(v) + 3 * u;
-      const uchar* got = column.at(v);
-      column_mismatches += !sameBytes({got[0], got[1], got[2]}, expected) ||
-                           column.luma(v) != FieldColor::luma(expected);
-    }
+    for (int v = 0; v < yuyv.rows; ++v) column_mismatches += differs(column, v, u, v);
   }
   EXPECT_EQ(column_mismatches, 0) << "of " << yuyv.total() << " pixels";
-  // Row Cb + 256 Cr as one run: the vectorised row decoding, all 2^24 too.
+  // Row Cb + 256 Cr as one run (OpenCV's row decoding and the vectorised luma), all 2^24 too.
   long row_mismatches = 0;
   for (int v = 0; v < yuyv.rows; ++v) {
     const DecodedRun row = pixels.rowRun(0, v, yuyv.cols, &buffer);
-    for (int u = 0; u < yuyv.cols; ++u) {
-      const uchar* expected = bgr.ptr<uchar>(v) + 3 * u;
-      const uchar* got = row.at(u);
-      row_mismatches += !sameBytes({got[0], got[1], got[2]}, expected) ||
-                        row.luma(u) != FieldColor::luma(expected);
-    }
+    for (int u = 0; u < yuyv.cols; ++u) row_mismatches += differs(row, u, u, v);
   }
   EXPECT_EQ(row_mismatches, 0) << "of " << yuyv.total() << " pixels";
 }
