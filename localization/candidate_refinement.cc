@@ -41,7 +41,8 @@ void GlobalHoughLocalizer::refineSurvivors(LocateState& s) const {
     for (PoseHypothesis& h :
          refineCandidate(c, s.fine, s.evidence, &s.line_scans, competingScore(best))) {
       best = std::max(best, h.score);
-      s.refined.push_back(std::move(h));
+      s.refined.push_back(h);
+      if (s.folded) s.refined.push_back(mirrored(h));
     }
   }
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 
+#include "localization/gaussian_pose.h"
 #include "localization/global_locate_state.h"
 
 namespace houghloc {
@@ -17,14 +18,24 @@ constexpr int kFirstRoundShare = 4;
 // Gauss-Newton iterations of the coarse stage (on the pre-score subsample).
 constexpr int kCoarseIterations = 6;
 
+/// Whether two candidates' coarse refinements ended at the same optimum.
+bool sameOptimum(const PoseHypothesis& a, const PoseHypothesis& b) {
+  return a.kind == b.kind &&
+         (a.field_T_robot.translation() - b.field_T_robot.translation()).norm() < kConvergedM &&
+         std::abs(angleDifference(a.field_T_robot.theta, b.field_T_robot.theta)) < kConvergedRad;
+}
+
 }  // namespace
 
 void GlobalHoughLocalizer::scoreAndPrune(LocateState& s) const {
   std::vector<PoseHypothesis>& located = s.located;
-  const std::size_t kept = static_cast<std::size_t>(kFirstRoundShare * config_.pruning.keep);
+  // Folded, each candidate stands for two: half as many keep the same number of poses.
+  PruningConfig pruning = config_.pruning;
+  if (s.folded) pruning.keep = (pruning.keep + 1) / 2;
+  const std::size_t kept = static_cast<std::size_t>(kFirstRoundShare * pruning.keep);
   if (located.size() > kept) keepBestOfFirstRound(located, kept, s);
   scoreCandidates(located, s.few, &s.evidence);
-  located = pruneCandidates(std::move(located), config_.pruning);
+  located = pruneCandidates(std::move(located), pruning);
 }
 
 void GlobalHoughLocalizer::keepBestOfFirstRound(std::vector<PoseHypothesis>& located,
@@ -83,10 +94,7 @@ void GlobalHoughLocalizer::converge(LocateState& s) const {
   for (PoseHypothesis& c : candidates) {
     bool same = false;
     for (const PoseHypothesis& k : out) {
-      same |=
-          k.kind == c.kind &&
-          (k.field_T_robot.translation() - c.field_T_robot.translation()).norm() < kConvergedM &&
-          std::abs(angleDifference(k.field_T_robot.theta, c.field_T_robot.theta)) < kConvergedRad;
+      same |= sameOptimum(k, c) || (s.folded && sameOptimum(mirrored(k), c));
     }
     if (!same) out.push_back(std::move(c));
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "localization/gaussian_pose.h"
 #include "localization/global_locate_state.h"
 
 namespace houghloc {
@@ -22,6 +23,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::locate(const GroundPoints& fra
   const HoughTransform sensor = sensorTransform(points);  // step 1: HT_S
   s.headings = orientationCandidates(sensor);             // step 2: headings theta_R
   if (s.headings.empty()) return {};
+  foldTwins(s);  // point-symmetric map: one heading of each twin pair, the twins mirrored back
   for (const OrientationCandidate& heading : s.headings) {  // steps 3 and 4: constraints, poses
     addPoseCandidates(heading.theta_rad, translationConstraints(points, heading.theta_rad), s);
   }
@@ -109,7 +111,25 @@ void GlobalHoughLocalizer::gateFieldEdge(LocateState& s) const {
   s.evidence.keepEdgeIfAnyFits(poses, map_.field());
 }
 
+void GlobalHoughLocalizer::foldTwins(LocateState& s) const {
+  if (!map_.pointSymmetric()) return;
+  s.folded = true;
+  std::vector<OrientationCandidate> kept;
+  for (const OrientationCandidate& h : s.headings) {
+    bool twin_kept = false;
+    for (const OrientationCandidate& k : kept) {
+      twin_kept |= std::abs(angleDifference(k.theta_rad + M_PI, h.theta_rad)) < 1e-9;
+    }
+    if (!twin_kept) kept.push_back(h);
+  }
+  s.headings.swap(kept);
+}
+
 std::vector<PoseHypothesis> GlobalHoughLocalizer::headingOnly(LocateState& s) const {
+  if (s.folded) {
+    const std::size_t n = s.heading_only.size();
+    for (std::size_t i = 0; i < n; ++i) s.heading_only.push_back(mirrored(s.heading_only[i]));
+  }
   for (PoseHypothesis& h : s.heading_only) h.score = h.support;
   std::vector<PoseHypothesis> out = mergeDuplicates(s.heading_only, config_.hypotheses);
   normalizeWeights(out, config_.hypotheses);

@@ -36,10 +36,13 @@ class GlobalHoughLocalizer {
       const WeightedPoints& points, double theta_r) const;
   /// Beyond the paper: poses from the centre circle and the penalty marks. With `evidence`, the
   /// rotations about a landmark are ranked with the field edge too (a lone arc of the circle
-  /// fits every rotation about its centre; the carpet's edge does not).
+  /// fits every rotation about its centre; the carpet's edge does not). `folded`: the headings
+  /// are one of each twin pair (foldTwins()), and so are the rotations scanned about a circle at
+  /// the field's centre.
   std::vector<PoseHypothesis> landmarkPoses(const WeightedPoints& points,
                                             const std::vector<OrientationCandidate>& headings,
-                                            const VisibilityEvidence* evidence = nullptr) const;
+                                            const VisibilityEvidence* evidence = nullptr,
+                                            bool folded = false) const;
   /// Step 4 scoring: score and inlier share of every candidate against the whole map, minus the
   /// field-edge penalty when `evidence` is given (cheap; the full negative evidence comes with
   /// the refinement).
@@ -68,6 +71,8 @@ class GlobalHoughLocalizer {
   struct LocateState;
 
   // The stages of locate(), in the order it runs them.
+  /// On a point-symmetric map keeps one heading of each twin pair (LocateState::folded).
+  void foldTwins(LocateState& s) const;
   /// Steps 3-4 for one heading: the poses the constraints give, on the carpet, and every 1-D
   /// line candidate (kept for parallel-only frames).
   void addPoseCandidates(double theta_r,
@@ -77,7 +82,8 @@ class GlobalHoughLocalizer {
   /// Drops the field edge unless a candidate explains it (see max_best_cost), so that it cannot
   /// shift every score by the same penalty.
   void gateFieldEdge(LocateState& s) const;
-  /// The paper's case M = 0: heading-only hypotheses ranked by their Hough support.
+  /// The paper's case M = 0: heading-only hypotheses ranked by their Hough support (with their
+  /// twins when folded).
   std::vector<PoseHypothesis> headingOnly(LocateState& s) const;
   /// Step 4 scoring, in two rounds: a quarter of the pre-score points ranks all candidates, the
   /// best few times `keep` are scored with all pre-score points, then pruned by segment extents.
@@ -87,10 +93,11 @@ class GlobalHoughLocalizer {
   void keepBestOfFirstRound(std::vector<PoseHypothesis>& located, std::size_t kept,
                             LocateState& s) const;
   /// Coarse Gauss-Newton of every pruned candidate on the pre-score points; keeps one of each
-  /// group that converged to the same pose, best score first.
+  /// group that converged to the same pose (or, folded, to its twin), best score first.
   void converge(LocateState& s) const;
-  /// refineCandidate() of every survivor, on the refinement points; a survivor placed by a scan
-  /// along its line must reach competingScore() of the best hypothesis refined before it.
+  /// refineCandidate() of every survivor, on the refinement points, and when folded the mirror
+  /// of what it gives; a survivor placed by a scan along its line must reach competingScore()
+  /// of the best hypothesis refined before it.
   void refineSurvivors(LocateState& s) const;
   /// Merges duplicates, full poses and 1-D hypotheses apart: a full pose near a 1-D hypothesis'
   /// mean is not its duplicate (it says where along the line, which the 1-D one does not).
@@ -181,11 +188,13 @@ class GlobalHoughLocalizer {
   /// The hypothesis-set config without a cap on the number (for merging).
   HypothesisSetConfig uncapped() const;
   /// Headings (best local maxima of the score) for rotations of the view about a landmark seen
-  /// at p_robot and mapped to p_field.
+  /// at p_robot and mapped to p_field. `half_turn`: the score repeats after half a turn (the
+  /// twins of a point-symmetric map about its centre), so only half a turn is scanned.
   std::vector<OrientationCandidate> scanHeadings(const Eigen::Vector2d& p_robot,
                                                  const Eigen::Vector2d& p_field,
                                                  const WeightedPoints& points,
-                                                 const VisibilityEvidence* evidence) const;
+                                                 const VisibilityEvidence* evidence,
+                                                 bool half_turn = false) const;
 
   GlobalHoughConfig config_;
   MapSignature map_;

@@ -19,7 +19,11 @@ struct GlobalHoughLocalizer::LocateState {
   VisibilityEvidence& evidence;  ///< negative evidence; gateFieldEdge() may drop its edge
   const WeightedPoints few;      ///< prescore_points subsample: second scoring round, converge()
   const WeightedPoints fine;     ///< refine_points subsample: refinement, scans along lines
-  std::vector<OrientationCandidate> headings;  ///< step 2
+  std::vector<OrientationCandidate> headings;  ///< step 2 (one of each twin pair when folded)
+  /// A point-symmetric map: a pose and its twin (-x, -y, theta + pi) explain every frame alike,
+  /// so steps 3 and 4 run on one heading of each pair (foldTwins()) and every candidate stands
+  /// for itself and its twin, which refineSurvivors() adds as the mirror of its refinement.
+  bool folded = false;
   /// Candidates with a position (full and 1-D, on the carpet), in the order found; after
   /// scoreAndPrune() and converge() the survivors.
   std::vector<PoseHypothesis> located;

@@ -99,7 +99,7 @@ std::vector<PoseHypothesis> GlobalHoughLocalizer::everyLineHypotheses(
   const double min_score = competingScore(best_score);
   std::vector<PoseHypothesis> scanned, out;
   for (const PoseHypothesis& line : lines) {
-    if (lineScanned(placed, line, false) || lineScanned(scanned, line, symmetric)) continue;
+    if (lineScanned(placed, line, symmetric) || lineScanned(scanned, line, symmetric)) continue;
     scanned.push_back(line);
     for (const PoseHypothesis& h : placeAlongLines(line, points, evidence, min_score)) {
       out.push_back(h);

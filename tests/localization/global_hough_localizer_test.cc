@@ -10,6 +10,7 @@
 
 #include "field_models/angles.h"
 #include "field_models/standard_fields.h"
+#include "localization/gaussian_pose.h"
 #include "tools/synthetic/synthetic_ground_points.h"
 
 namespace houghloc {
@@ -194,6 +195,37 @@ TEST_F(LocalizerTest, CentreCircleAloneLocatesUpToSymmetry) {
   const int rank = rankOf(hs, truth);
   ASSERT_GE(rank, 0);
   EXPECT_LE(rank, 1);
+}
+
+TEST_F(LocalizerTest, TwinsOnAPointSymmetricFieldAreExactMirrors) {
+  // Each candidate stands for itself and its twin (-x, -y, theta + pi), which explains the frame
+  // alike: refined once, the twin is its mirror with the same score (two refinements ended a few
+  // millimetres apart and took two slots).
+  int pairs = 0;
+  for (int k = 0; k < 12; ++k) {
+    SyntheticConfig config;
+    config.view = viewModel(k % 2 == 0 ? "kid-wide" : "nao-top");
+    config.seed = 300 + k;
+    const Pose2 truth(-4.0 + 0.7 * k, 2.5 - 0.45 * k, 0.55 * k);
+    const auto hs = localizer_->locate(generateFrame(*field_, truth, config).ground);
+    expectWellFormed(hs);
+    for (const PoseHypothesis& h : hs) {
+      for (const PoseHypothesis& other : hs) {
+        // Same kind and within 2 cm: hypotheses of a kind closer than 0.25 m are merged.
+        if (&other == &h || other.kind != h.kind ||
+            !near(other.field_T_robot, mirrored(h.field_T_robot), 0.02, 0.01)) {
+          continue;
+        }
+        ++pairs;
+        const Pose2 twin = mirrored(h.field_T_robot);
+        EXPECT_EQ(other.field_T_robot.x, twin.x) << "frame " << k;
+        EXPECT_EQ(other.field_T_robot.y, twin.y) << "frame " << k;
+        EXPECT_NEAR(angleDifference(other.field_T_robot.theta, twin.theta), 0.0, 1e-12);
+        EXPECT_EQ(other.score, h.score) << "frame " << k;
+      }
+    }
+  }
+  EXPECT_GE(pairs, 24);  // every frame has pairs (each counted from both sides)
 }
 
 TEST_F(LocalizerTest, NegativeEvidencePenalisesLinesExpectedButNotSeen) {
