@@ -11,9 +11,11 @@ namespace houghloc {
 namespace {
 
 // The scan along lines visits every kCoarseStride-th position first; only next to the best of
-// those and just outside their span where the points fit does it look at the positions between
-// (the scores vary over the kernel's width along a line, 0.15 m, more slowly than the 0.1 m step).
-constexpr std::size_t kCoarseStride = 2;
+// those and just outside their span where the points fit does it look at the positions between.
+// A score changes along a line where the seen points pass a segment's end, over the kernel's
+// width (0.15 m): a 0.3 m stride finds the truth on the same parallel-only frames as 0.2 m
+// (docs/global-localization.md, "Worst frame").
+constexpr std::size_t kCoarseStride = 3;
 
 /// Interval of s for which t0 + s u stays inside |x| <= hx, |y| <= hy.
 bool carpetInterval(const Eigen::Vector2d& t0, const Eigen::Vector2d& u, double hx, double hy,
