@@ -14,7 +14,7 @@ namespace {
 // those and just outside their span where the points fit does it look at the positions between.
 // A score changes along a line where the seen points pass a segment's end, over the kernel's
 // width (0.15 m): a 0.3 m stride finds the truth on the same parallel-only frames as 0.2 m
-// (docs/global-localization.md, "Worst frame").
+// (docs/global-localization.md, "What keeps it fast").
 constexpr std::size_t kCoarseStride = 3;
 
 /// Interval of s for which t0 + s u stays inside |x| <= hx, |y| <= hy.
