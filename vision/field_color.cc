@@ -129,15 +129,12 @@ double turfEvidence(const std::vector<Sample>& samples, cv::Point2f centre,
   return share * (config.bottom_weight_floor + bottom_share) * colourful;
 }
 
-/// The cluster with the most turf evidence among the largest histogram peaks and the previous
-/// frame's field colour (when given). Falls back to the largest peak (then judged invalid).
-cv::Point2f turfPeak(const std::vector<Sample>& samples, const FieldColorConfig& config,
-                     const FieldColor* previous) {
-  std::vector<cv::Point2f> peaks = histogramPeaks(samples, config.histogram_bins);
+/// The cluster with the most turf evidence among `peaks` (the largest histogram peaks) and the
+/// previous frame's field colour (when given). Falls back to the largest peak (then judged
+/// invalid).
+cv::Point2f turfPeak(const std::vector<Sample>& samples, const std::vector<cv::Point2f>& peaks,
+                     const FieldColorConfig& config, const FieldColor* previous) {
   if (peaks.empty()) return {1.f / 3.f, 1.f / 3.f};
-  if (static_cast<int>(peaks.size()) > config.max_candidates) {
-    peaks.resize(static_cast<size_t>(config.max_candidates));
-  }
   cv::Point2f best = peaks.front();
   double best_score = 0.0;
   for (const cv::Point2f& peak : peaks) {
@@ -261,26 +258,27 @@ void textureByBand(const std::vector<const Sample*>& field_samples, int image_ro
   }
 }
 
-}  // namespace
-
-FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& start_rows,
-                              const FieldColorConfig& config, const FieldColor* previous) {
-  FieldColor color;
-  const std::vector<Sample> samples = visitPixels(
-      image, [&](const auto& pixels) { return collectSamples(pixels, start_rows, config); });
-  if (samples.size() < 10) return color;
-  cv::Point2f centre = turfPeak(samples, config, previous);
-
-  // Refine: mean of the samples near the peak, then a robust spread around it.
+/// A chromaticity disc refined from a peak: the mean of the samples within max_chroma_radius
+/// (twice, as the centre moves), and a robust spread around it; `accept` picks the samples that
+/// may count. Radius 0 when none lie near.
+struct Disc {
+  cv::Point2f centre;
+  float radius = 0.f;
+};
+template <typename Accept>
+Disc refineDisc(const std::vector<Sample>& samples, cv::Point2f centre,
+                const FieldColorConfig& config, Accept&& accept) {
   float radius = static_cast<float>(config.max_chroma_radius);
   for (int iteration = 0; iteration < 2; ++iteration) {
     double sum_r = 0.0, sum_g = 0.0;
     std::vector<float> distances;
     for (const Sample& s : samples) {
       const float d2 = squaredDistance(s, centre);
-      if (d2 < radius * radius) sum_r += s.r, sum_g += s.g, distances.push_back(std::sqrt(d2));
+      if (d2 < radius * radius && accept(s)) {
+        sum_r += s.r, sum_g += s.g, distances.push_back(std::sqrt(d2));
+      }
     }
-    if (distances.empty()) return color;
+    if (distances.empty()) return {centre, 0.f};
     centre = {static_cast<float>(sum_r / distances.size()),
               static_cast<float>(sum_g / distances.size())};
     // The median distance of a 2-D Gaussian is 1.177 sigma.
@@ -291,6 +289,69 @@ FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& star
     radius = std::clamp(static_cast<float>(config.radius_sigmas) * sigma,
                         std::min(static_cast<float>(config.min_chroma_radius), limit), limit);
   }
+  return {centre, radius};
+}
+
+/// The turf in the shade (FieldColorConfig::max_other_light_distance): among `peaks` (the
+/// largest histogram peaks) outside the field's disc, the one with the most samples whose median
+/// luma is min_light_ratio times darker than the field's. Radius 0 when none.
+Disc otherLight(const std::vector<Sample>& samples, const std::vector<cv::Point2f>& peaks,
+                const Disc& field, float field_luma, int field_samples,
+                const FieldColorConfig& config) {
+  Disc best;
+  if (config.max_other_light_distance <= 0.0) return best;
+  const auto outside = [&](const Sample& s) {
+    return squaredDistance(s, field.centre) >= field.radius * field.radius;
+  };
+  std::size_t best_count = 0;
+  for (const cv::Point2f& peak : peaks) {
+    const cv::Point2f moved = peak - field.centre;
+    if (moved.dot(moved) > config.max_other_light_distance * config.max_other_light_distance ||
+        moved.dot(moved) < field.radius * field.radius) {
+      continue;
+    }
+    const Disc disc = refineDisc(samples, peak, config, outside);
+    const float grey = greyDistance(disc.centre);
+    if (disc.radius <= 0.f || grey < config.min_grey_distance || grey <= disc.radius ||
+        disc.centre.y < disc.centre.x + config.min_green_over_red) {
+      continue;
+    }
+    std::vector<float> lumas;
+    for (const Sample& s : samples) {
+      if (outside(s) && squaredDistance(s, disc.centre) < disc.radius * disc.radius) {
+        lumas.push_back(static_cast<float>(s.luma));
+      }
+    }
+    if (lumas.size() < config.min_light_share * field_samples || lumas.size() <= best_count) {
+      continue;
+    }
+    // Shade only: what is brighter than the turf is more often a window or a sunlit wall.
+    if (median(lumas) * config.min_light_ratio > field_luma) continue;
+    best = disc;
+    best_count = lumas.size();
+  }
+  return best;
+}
+
+}  // namespace
+
+FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& start_rows,
+                              const FieldColorConfig& config, const FieldColor* previous) {
+  FieldColor color;
+  const std::vector<Sample> samples = visitPixels(
+      image, [&](const auto& pixels) { return collectSamples(pixels, start_rows, config); });
+  if (samples.size() < 10) return color;
+  std::vector<cv::Point2f> peaks = histogramPeaks(samples, config.histogram_bins);
+  if (static_cast<int>(peaks.size()) > config.max_candidates) {
+    peaks.resize(static_cast<size_t>(config.max_candidates));
+  }
+  cv::Point2f centre = turfPeak(samples, peaks, config, previous);
+
+  // Refine: mean of the samples near the peak, then a robust spread around it.
+  const Disc field = refineDisc(samples, centre, config, [](const Sample&) { return true; });
+  if (field.radius <= 0.f) return color;
+  centre = field.centre;
+  const float radius = field.radius;
 
   std::vector<float> lumas, local_diffs;
   std::vector<const Sample*> textured;  // field samples with a luma change below them
@@ -305,6 +366,11 @@ FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& star
   color.r = centre.x;
   color.g = centre.y;
   color.radius = radius;
+  const Disc other = otherLight(samples, peaks, field, static_cast<float>(median(lumas)),
+                                static_cast<int>(lumas.size()), config);
+  color.other_r = other.centre.x;
+  color.other_g = other.centre.y;
+  color.other_radius = other.radius;
   color.chroma_noise = static_cast<float>(config.chroma_noise);
   color.field_share = static_cast<float>(lumas.size()) / samples.size();
   const LumaHistogram histogram(lumas);

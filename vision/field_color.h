@@ -39,6 +39,13 @@ struct FieldColorConfig {
   double min_light_share = 0.15;
   double min_light_ratio = 1.7;  ///< ... and the lit level's median luma is this many times the
                                  ///< shade's: more than turf texture or vignetting varies
+  /// The same turf in the shade (FieldColor::other_r, other_g, other_radius): a chromaticity
+  /// cluster at most this far from the field colour's centre, green to teal like it, whose
+  /// samples are min_light_ratio times darker than the field's and number at least
+  /// min_light_share of them. Sun and shade differ in colour too where the shade is lit by
+  /// another source (the sky, the hall's lamps). A brighter cluster is not taken (windows and
+  /// sunlit walls are brighter than the turf too). 0 turns it off.
+  double max_other_light_distance = 0.18;
   // Texture per band of image rows (FieldColor::band_texture_sigma): far turf, whose blades blur
   // together, is smoother than the near turf that dominates texture_sigma.
   int texture_bands = 4;      ///< bands of equal height (at most FieldColor::kMaxTextureBands)
@@ -50,8 +57,11 @@ struct FieldColorConfig {
 /// Colour temperature moves it, which the per-frame estimate follows.
 struct FieldColor {
   bool valid = false;
-  float r = 0.f, g = 0.f;     ///< chromaticity centre of the field
-  float radius = 0.f;         ///< accepted chromaticity distance from the centre
+  float r = 0.f, g = 0.f;  ///< chromaticity centre of the field
+  float radius = 0.f;      ///< accepted chromaticity distance from the centre
+  /// The turf in the shade, where its chromaticity lies outside the radius
+  /// (FieldColorConfig::max_other_light_distance): a second disc; other_radius 0 when none.
+  float other_r = 0.f, other_g = 0.f, other_radius = 0.f;
   float luma_median = 0.f;    ///< of the field samples, 0-255
   float luma_sigma = 0.f;     ///< robust spread (turf texture and noise), 0-255
   float texture_sigma = 0.f;  ///< the same from luma changes between field samples 12 px
@@ -80,9 +90,8 @@ struct FieldColor {
   bool isField(const uchar* bgr) const {
     const float sum = static_cast<float>(bgr[0] + bgr[1] + bgr[2]);
     if (luma(bgr) < min_luma) return false;
-    const float dr = bgr[2] - r * sum, dg = bgr[1] - g * sum;
-    const float tolerance = radius * sum + chroma_noise;
-    return dr * dr + dg * dg < tolerance * tolerance;
+    return inDisc(bgr, sum, r, g, radius) ||
+           (other_radius > 0.f && inDisc(bgr, sum, other_r, other_g, other_radius));
   }
   bool isWhitish(const uchar* bgr) const { return isNearGrey(bgr, white_radius); }
   /// Whether `bgr` is brighter than the mean of `a` and `b` (the pixels beside it) in every
@@ -94,6 +103,13 @@ struct FieldColor {
       if (d[c] <= 0.f) return false;
     }
     return isNearGrey(d, white_radius);
+  }
+  /// Whether the pixel's chromaticity lies within disc_radius of (disc_r, disc_g), with the
+  /// noise allowance; sum = B + G + R.
+  bool inDisc(const uchar* bgr, float sum, float disc_r, float disc_g, float disc_radius) const {
+    const float dr = bgr[2] - disc_r * sum, dg = bgr[1] - disc_g * sum;
+    const float tolerance = disc_radius * sum + chroma_noise;
+    return dr * dr + dg * dg < tolerance * tolerance;
   }
   /// Whether the pixel's (or a colour difference's: `Channel` float) chromaticity lies within
   /// `radius` of grey (1/3, 1/3).

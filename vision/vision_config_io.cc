@@ -35,6 +35,7 @@ ConfigSection visionSection(VisionConfig& c) {
          HL_MEMBER(c.field_color, memory_frames),
          HL_MEMBER(c.field_color, min_light_share),
          HL_MEMBER(c.field_color, min_light_ratio),
+         HL_MEMBER(c.field_color, max_other_light_distance),
          HL_MEMBER(c.field_color, texture_bands),
          HL_MEMBER(c.field_color, min_band_samples)}}},
       {"boundary",

@@ -49,7 +49,6 @@ TEST_F(RealFramesTest, FramesShowingLinesGivePoints) {
       "scarrix_nao_unknown/images/oisin_compete0276.png",
       // candidates not turf-bounded (before the continuation test its one point lay on a foot)
       "scarrix_nao_lower_320x240/images/lower_936261.jpg",
-      "msl_robocup_ml/images/20220715_r7_cam3_20220715_172417.jpg",
   };
   ASSERT_LE(unsupported.size(), 7u);
   int yes = 0, empty = 0;

@@ -1,10 +1,11 @@
 // Unit tests of the real-frame tools on synthetic images: the column-scan baseline, the mask
-// measures and the frame-rejection classifier.
+// measures, the frame-rejection classifier and the coverage overlay.
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
 
 #include "tools/baselines/column_scan.h"
+#include "tools/realframes/coverage_overlay.h"
 #include "tools/realframes/mask_metrics.h"
 #include "vision/camera_presets.h"
 #include "vision/frame_rejection.h"
@@ -81,6 +82,27 @@ TEST(FrameRejection, NamesTheStageThatLeftAFrameEmpty) {
   EXPECT_EQ(classifyFrame(dropped), FrameRejection::kDroppedNearBorder);
   dropped.diagnostics.dropped_near_boundary = 1;
   EXPECT_EQ(classifyFrame(dropped), FrameRejection::kNotProjected);
+}
+
+TEST(CoverageOverlay, MarksCoveredAndMissedSamplesAndThePointsWhereTheCameraSeesThem) {
+  const CameraPreset preset = cameraPreset("nao-top");  // 20.6 deg down, sees 0.6 m and beyond
+  const CameraModel camera(preset.intrinsics, preset.robot_T_camera);
+  const cv::Mat grey(camera.height(), camera.width(), CV_8UC3, cv::Scalar(90, 90, 90));
+  // Two samples 2 m ahead, 0.6 m apart; one point 0.12 m beside the first (within 0.15 m).
+  const Eigen::Vector2d covered(2.0, 0.3), missed(2.0, -0.3), point(2.0, 0.42);
+  const cv::Mat overlay = coverageOverlay(grey, camera, {covered, missed}, {point}, 0.15);
+  const auto colourAt = [&](const Eigen::Vector2d& ground) {
+    const auto pixel = camera.project({ground.x(), ground.y(), 0.0});
+    EXPECT_TRUE(pixel && camera.inImage(*pixel));
+    const cv::Vec3b c = overlay.at<cv::Vec3b>(static_cast<int>(std::lround(pixel->y())),
+                                              static_cast<int>(std::lround(pixel->x())));
+    return cv::Scalar(c[0], c[1], c[2]);
+  };
+  EXPECT_EQ(colourAt(covered), kCoveredColour);
+  EXPECT_EQ(colourAt(missed), kUncoveredColour);
+  EXPECT_EQ(colourAt(point), kPointColour);
+  // The frame itself is left as it was.
+  EXPECT_EQ(cv::countNonZero(grey.reshape(1) != 90), 0);
 }
 
 }  // namespace

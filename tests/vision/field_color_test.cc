@@ -202,5 +202,35 @@ TEST(FieldColor, TakesThisFramesTurfOverARememberedColourOfAnotherCluster) {
   EXPECT_NEAR(mostly_shade.r, 0.21, 0.02);
 }
 
+TEST(FieldColor, TakesTheSameTurfInTheShadeAsASecondColour) {
+  const std::vector<int> rows(160, 0);
+  const cv::Rect shade_area(4, 4, 60, 112), sun_area(80, 4, 76, 112);
+  // 45 % shade, 55 % sun: the sun is the field colour, the shade (0.16 away in chromaticity,
+  // 1.85 times darker) the same turf under other light.
+  const cv::Mat both = shadeAndSun(0.45);
+  const FieldColor color = estimateFieldColor(both, rows);
+  ASSERT_TRUE(color.valid);
+  EXPECT_NEAR(color.r, 0.37, 0.02);
+  ASSERT_GT(color.other_radius, 0.f);
+  EXPECT_NEAR(color.other_r, 0.21, 0.02);
+  EXPECT_NEAR(color.other_g, 0.51, 0.02);
+  EXPECT_GT(share(both, color, sun_area, true), 0.95);
+  EXPECT_GT(share(both, color, shade_area, true), 0.95);
+  // Without the second colour the shade is no field.
+  FieldColorConfig one_colour;
+  one_colour.max_other_light_distance = 0.0;
+  const FieldColor plain = estimateFieldColor(both, rows, one_colour);
+  EXPECT_EQ(plain.other_radius, 0.f);
+  EXPECT_LT(share(both, plain, shade_area, true), 0.05);
+  // When the shade is the field colour, the brighter cluster is not taken: what is brighter than
+  // the turf is more often a window or a sunlit wall.
+  const cv::Mat mostly_shade = shadeAndSun(0.6);
+  const FieldColor shade = estimateFieldColor(mostly_shade, rows);
+  ASSERT_TRUE(shade.valid);
+  EXPECT_NEAR(shade.r, 0.21, 0.02);
+  EXPECT_EQ(shade.other_radius, 0.f);
+  EXPECT_LT(share(mostly_shade, shade, cv::Rect(100, 4, 56, 112), true), 0.05);
+}
+
 }  // namespace
 }  // namespace houghloc

@@ -11,6 +11,7 @@
 
 #include "field_models/standard_fields.h"
 #include "localization/gaussian_pose.h"
+#include "tools/realframes/coverage_overlay.h"
 #include "tools/recording/csv.h"
 #include "tools/recording/recording.h"
 
@@ -175,8 +176,23 @@ std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_d
       ++r.hypotheses;
     }
     const CameraModel camera(s.camera->recording.intrinsicsFor(*s.frame), frame.robot_T_camera);
-    r.metrics =
-        groundTruthMetrics(*field, *truth, camera, robotFramePoints(seen.vision.ground.points));
+    const std::vector<Eigen::Vector2d> points = robotFramePoints(seen.vision.ground.points);
+    r.metrics = groundTruthMetrics(*field, *truth, camera, points);
+    if (!check.overlay_dir.empty() && !bgr.empty()) {
+      const GroundTruthMetricsConfig metrics;
+      const CameraModel used(s.camera->recording.intrinsicsFor(*s.frame),
+                             seen.vision.robot_T_camera_used);
+      const fs::path file =
+          fs::path(check.overlay_dir) /
+          (s.camera->name + "_" + fs::path(s.frame->image).stem().string() + ".png");
+      fs::create_directories(check.overlay_dir);
+      if (!cv::imwrite(
+              file.string(),
+              coverageOverlay(bgr, used, visibleLineSamples(*field, *truth, camera, metrics),
+                              points, metrics.found_radius_m))) {
+        throw RecordingError("cannot write " + file.string());
+      }
+    }
     out.push_back(std::move(r));
   }
   return out;

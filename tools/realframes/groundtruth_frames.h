@@ -39,6 +39,9 @@ struct GlobalCheckConfig {
   /// Run the vision over the folder once first (LocalizationPipeline::learnCameraTilt), as
   /// houghloc-offline --learn-tilt-first does: every frame starts from the folder's tilt.
   bool learn_tilt_first = false;
+  /// When set, each ground-truth frame's coverage overlay (coverage_overlay.h) is written to
+  /// <overlay_dir>/<folder>_<image stem>.png.
+  std::string overlay_dir;
 };
 
 /// One ground-truth frame through LocalizationPipeline in kGlobalOnly mode (as houghloc-offline

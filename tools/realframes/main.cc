@@ -24,6 +24,11 @@ int main(int argc, char** argv) {
   std::string config_file;
   app.add_option("--folder", only, "run only these folders (repeatable)");
   app.add_option("--config", config_file, "config YAML (its vision: section), as houghloc-offline");
+  std::string overlay_dir;
+  app.add_option("--coverage-overlay", overlay_dir,
+                 "write each ground-truth frame of the --learn-tilt-first runs with the map's "
+                 "visible line samples (green: a point within 0.15 m, red: none) and the points "
+                 "(blue crosses) to DIR/<run>/<folder>_<image>.png");
   CLI11_PARSE(app, argc, argv);
   try {
     if (!std::filesystem::is_directory(data_dir)) {
@@ -68,6 +73,7 @@ int main(int argc, char** argv) {
                        globalCheckAtGroundTruth(data_dir, folder, pipeline_config));
       GlobalCheckConfig learn_first;
       learn_first.learn_tilt_first = true;
+      if (!overlay_dir.empty()) learn_first.overlay_dir = overlay_dir + "/learn-tilt-first";
       printGlobalCheck((folder + ", recorded camera pose, --learn-tilt-first").c_str(),
                        globalCheckAtGroundTruth(data_dir, folder, pipeline_config, learn_first));
       if (!folderHasFitDpitch(data_dir, folder)) continue;
@@ -82,6 +88,7 @@ int main(int argc, char** argv) {
     shared.vision.pose_correction.shared_between_cameras = true;
     GlobalCheckConfig learn_first;
     learn_first.learn_tilt_first = true;
+    if (!overlay_dir.empty()) learn_first.overlay_dir = overlay_dir + "/shared-corrector";
     for (const std::vector<std::string>& cameras : sameRobotFolders(data_dir, truth_folders)) {
       std::string names;
       for (const std::string& c : cameras) names += (names.empty() ? "" : " + ") + c;
