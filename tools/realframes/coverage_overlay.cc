@@ -1,9 +1,14 @@
 #include "tools/realframes/coverage_overlay.h"
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 
 #include "tools/realframes/groundtruth_metrics.h"
+#include "tools/recording/recording.h"
 
 namespace houghloc {
 namespace {
@@ -41,6 +46,16 @@ cv::Mat coverageOverlay(const cv::Mat& bgr, const CameraModel& camera,
   cv::putText(out, caption, {8, out.rows - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.5, {0, 0, 0}, 3);
   cv::putText(out, caption, {8, out.rows - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.5, {255, 255, 255}, 1);
   return out;
+}
+
+void writeCoverageOverlay(const std::string& path, const cv::Mat& bgr, const CameraModel& camera,
+                          const std::vector<Eigen::Vector2d>& samples_robot,
+                          const std::vector<Eigen::Vector2d>& points_robot, double radius_m) {
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (!folder.empty()) std::filesystem::create_directories(folder);
+  if (!cv::imwrite(path, coverageOverlay(bgr, camera, samples_robot, points_robot, radius_m))) {
+    throw RecordingError("cannot write " + path);
+  }
 }
 
 }  // namespace houghloc

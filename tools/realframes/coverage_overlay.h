@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
+#include <string>
 #include <vector>
 
 #include "vision/camera_model.h"
@@ -16,6 +17,12 @@ namespace houghloc {
 cv::Mat coverageOverlay(const cv::Mat& bgr, const CameraModel& camera,
                         const std::vector<Eigen::Vector2d>& samples_robot,
                         const std::vector<Eigen::Vector2d>& points_robot, double radius_m);
+
+/// coverageOverlay written to `path` (PNG; its folder is created). Throws RecordingError when the
+/// file cannot be written.
+void writeCoverageOverlay(const std::string& path, const cv::Mat& bgr, const CameraModel& camera,
+                          const std::vector<Eigen::Vector2d>& samples_robot,
+                          const std::vector<Eigen::Vector2d>& points_robot, double radius_m);
 
 /// The colours coverageOverlay draws with (BGR).
 inline const cv::Scalar kCoveredColour(0, 200, 0), kUncoveredColour(0, 0, 255),

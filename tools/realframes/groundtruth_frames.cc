@@ -180,18 +180,11 @@ std::vector<GlobalCheckFrame> globalCheckAtGroundTruth(const std::string& data_d
     r.metrics = groundTruthMetrics(*field, *truth, camera, points);
     if (!check.overlay_dir.empty() && !bgr.empty()) {
       const GroundTruthMetricsConfig metrics;
-      const CameraModel used(s.camera->recording.intrinsicsFor(*s.frame),
-                             seen.vision.robot_T_camera_used);
-      const fs::path file =
-          fs::path(check.overlay_dir) /
-          (s.camera->name + "_" + fs::path(s.frame->image).stem().string() + ".png");
-      fs::create_directories(check.overlay_dir);
-      if (!cv::imwrite(
-              file.string(),
-              coverageOverlay(bgr, used, visibleLineSamples(*field, *truth, camera, metrics),
-                              points, metrics.found_radius_m))) {
-        throw RecordingError("cannot write " + file.string());
-      }
+      const std::string name = s.camera->name + "_" + fs::path(s.frame->image).stem().string();
+      writeCoverageOverlay(
+          (fs::path(check.overlay_dir) / (name + ".png")).string(), bgr,
+          CameraModel(s.camera->recording.intrinsicsFor(*s.frame), seen.vision.robot_T_camera_used),
+          visibleLineSamples(*field, *truth, camera, metrics), points, metrics.found_radius_m);
     }
     out.push_back(std::move(r));
   }
