@@ -366,15 +366,15 @@ FieldColor estimateFieldColor(const cv::Mat& image, const std::vector<int>& star
   color.r = centre.x;
   color.g = centre.y;
   color.radius = radius;
-  const Disc other = otherLight(samples, peaks, field, static_cast<float>(median(lumas)),
-                                static_cast<int>(lumas.size()), config);
-  color.other_r = other.centre.x;
-  color.other_g = other.centre.y;
-  color.other_radius = other.radius;
   color.chroma_noise = static_cast<float>(config.chroma_noise);
   color.field_share = static_cast<float>(lumas.size()) / samples.size();
   const LumaHistogram histogram(lumas);
   color.luma_median = static_cast<float>(histogram.median(0, 256));
+  const Disc other =
+      otherLight(samples, peaks, field, color.luma_median, static_cast<int>(lumas.size()), config);
+  color.other_r = other.centre.x;
+  color.other_g = other.centre.y;
+  color.other_radius = other.radius;
   color.luma_sigma = histogram.robustSigma(0, 256);
   splitLightLevels(histogram, config, &color);
   // Neighbouring samples in a column, 12 px apart, differ by the turf's texture and noise but
